@@ -17,7 +17,7 @@ then the system's library path.
 
 from ._core import Error, ArgumentError, ModelError, NumericalError
 from .commands import Output, Fields
-from .model import Model, Equations, Hamiltonian, Equilibrium, Equilibria, Mode, Modes
+from .model import Model, Equations, Hamiltonian, Equilibrium, Equilibria, Mode, Modes, Metric
 from .sim import Result, Table, Rhs
 from .runs import Animation
 from .control import StateSpace, Lqr, lqr
@@ -25,12 +25,15 @@ from .relativity import lorentz, proper_time, collide
 from .forms import (Homogeneity, Periods, QuadraticForm, homogeneity, periods, quadratic_form,
                     tour)
 from .field import Field
+from .appendix import GramSchmidt, gram_schmidt
 from .kernel import Expr, Code, parse, diff, expand, simplify, print_expr
+from ._progress import set_progress
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
-           "Equations", "Hamiltonian", "Equilibrium", "Equilibria",
+           "Equations", "Hamiltonian", "Equilibrium", "Equilibria", "Metric",
            "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Homogeneity",
            "homogeneity", "Periods", "periods", "tour", "Field",
-           "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr"]
+           "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr", "set_progress",
+           "GramSchmidt", "gram_schmidt"]
 from ._lib import VERSION as __version__

@@ -52,6 +52,10 @@ class Fields(dict):
             raise AttributeError("no field %r (the fields: %s)"
                                  % (name, ", ".join(self))) from None
 
+    def _repr_html_(self):
+        from . import display
+        return display.fields(self)
+
 
 class Output:
     """The result of a command: its fields are the keys of the JSON that
@@ -100,9 +104,31 @@ class Output:
         return "<qdot.Output %s: %s>" % (self.command, ", ".join(parts))
 
     def _repr_latex_(self):
+        """The command's own LaTeX rendering (routh, hj, bracket, impulse,
+        hamiltonian), or None for a command that has none."""
         if self._latex is None:
             return None
         return latex_display(self._latex())
+
+    def _repr_html_(self):
+        """A table of the fields for Jupyter, unless the command has a LaTeX
+        rendering (shown instead).  Rows of numbers under their column names
+        (sweep's "columns" and "rows") are one table headed by them."""
+        if self._latex is not None:
+            return None
+        return self.html()
+
+    def html(self):
+        """The fields as an HTML table (what Jupyter shows without LaTeX)."""
+        from . import display
+        data = dict(self.json)
+        parts = []
+        cols, rows = data.get("columns"), data.get("rows")
+        if (isinstance(cols, list) and isinstance(rows, list) and
+                all(isinstance(r, list) and len(r) == len(cols) for r in rows)):
+            del data["rows"], data["columns"]
+            parts.append(display.table(cols, rows, caption="%d rows" % len(rows)))
+        return display.block("qdot " + self.command, display.fields(data), *parts)
 
     def sympy(self, key):
         """The field key with each formula in it a SymPy value (needs sympy):

@@ -113,6 +113,11 @@ class StateSpace:
         self.xdot0 = _matrix(s.xdot0, 1, nx)[0]
         self.y0 = _matrix(s.y0, 1, ny)[0] if ny else np.zeros(0)
         self.A_exact, self.B_exact = _exact(core, s.Asym, nx, nx), _exact(core, s.Bsym, nx, nu)
+        # the expressions themselves (the context's, alive with core), for the LaTeX display
+        self._sym = {"x": [s.states[i] for i in range(nx)],
+                     "u": [s.inputs[i] for i in range(nu)],
+                     "A": [s.Asym[k] for k in range(nx * nx)] if s.Asym else None,
+                     "B": [s.Bsym[k] for k in range(nx * nu)] if s.Bsym else None}
         self.C_exact, self.D_exact = _exact(core, s.Csym, ny, nx), _exact(core, s.Dsym, ny, nu)
         self.eigenvalues = np.array([complex(s.eig_re[k], s.eig_im[k]) for k in range(nx)])
         self.rank_ctrb, self.rank_obsv = s.rank_ctrb, s.rank_obsv
@@ -148,7 +153,55 @@ class StateSpace:
             lib.qd_care_result_free(out)
 
     def __repr__(self):
-        return "<qdot.StateSpace states %s, inputs %s>" % (self.states, self.inputs)
+        return "<qdot.StateSpace states %s, inputs %s, outputs %s: eigenvalues %s>" % (
+            self.states, self.inputs, self.outputs, np.round(self.eigenvalues, 6).tolist())
+
+    def _repr_latex_(self):
+        """d/dt dx = xdot0 + A dx + B du with the exact A and B, every entry and name
+        printed by the library's LaTeX printer (None when the exact form
+        was not kept: the HTML tables show the numbers)."""
+        from ._lib import QD_FMT_LATEX
+        from .display import latex_matrix
+        sym = self._sym
+        if sym["A"] is None or (self.inputs and sym["B"] is None):
+            return None
+        tex = lambda x: self._core.text_of(x, QD_FMT_LATEX)  # noqa: E731
+        nx, nu = len(self.states), len(self.inputs)
+        col = lambda xs: latex_matrix([[tex(x)] for x in xs])  # noqa: E731
+        A = latex_matrix([[tex(sym["A"][i * nx + j]) for j in range(nx)] for i in range(nx)])
+        rhs = A + r"\,\delta" + col(sym["x"])
+        if nu:
+            B = latex_matrix([[tex(sym["B"][i * nu + j]) for j in range(nu)]
+                              for i in range(nx)])
+            rhs += " + " + B + r"\,\delta" + col(sym["u"])
+        if np.any(self.xdot0 != 0):  # not an equilibrium: the rates there, as numbers
+            rhs = latex_matrix([["%.10g" % v] for v in self.xdot0]) + " + " + rhs
+        # delta: the deviation from the point linearized about
+        return r"$$\frac{d}{dt}\,\delta%s = %s$$" % (col(sym["x"]), rhs)
+
+    def _repr_html_(self):
+        """The numbers: A, B, C, D headed by the names, the eigenvalues of A,
+        controllability and observability (shown when there is no LaTeX)."""
+        if self._repr_latex_() is not None:
+            return None
+        return self.html()
+
+    def html(self):
+        """The numbers of the state-space form as HTML tables."""
+        from . import display
+        t = display.table
+        parts = [t(self.states, self.A.tolist(), self.states, "A"),
+                 t(self.inputs, self.B.tolist(), self.states, "B")]
+        if self.outputs:
+            parts += [t(self.states, self.C.tolist(), self.outputs, "C"),
+                      t(self.inputs, self.D.tolist(), self.outputs, "D")]
+        parts.append(t(["Re", "Im"], [[z.real, z.imag] for z in self.eigenvalues],
+                       caption="eigenvalues of A"))
+        parts.append(display.fields({"controllable": self.controllable,
+                                     "controllability_rank": self.rank_ctrb,
+                                     "observable": self.observable,
+                                     "observability_rank": self.rank_obsv}))
+        return display.block("qdot linearize about %s" % (self.about,), *parts)
 
 
 def _square(x, n, what):
@@ -181,7 +234,17 @@ class Lqr:
         self.residual, self.rcond = residual, rcond
 
     def __repr__(self):
-        return "Lqr(K=%r)" % (self.K,)
+        return "Lqr(K=%s, residual=%.3g)" % (np.array2string(self.K, precision=6),
+                                             self.residual)
+
+    def _repr_html_(self):
+        from . import display
+        return display.block("qdot lqr", display.table(None, self.K.tolist(), caption="K"),
+                             display.table(None, self.X.tolist(), caption="X"),
+                             display.table(["Re", "Im"], [[z.real, z.imag]
+                                                          for z in self.eigenvalues],
+                                           caption="eigenvalues of A - B K"),
+                             display.fields({"residual": self.residual, "rcond": self.rcond}))
 
 
 def lqr(A, B, weights):

@@ -6,7 +6,7 @@ qdot.homogeneity, qdot.periods (App. 20, App. 31); qdot.tour(): the kernel's tou
 import json
 
 from ._lib import ffi, lib, new, buf_text, cstr, exprs, QD_FMT_TEXT
-from ._core import Error
+from ._core import ArgumentError, Error, format_diag, take_error
 
 
 class QuadraticForm:
@@ -30,15 +30,43 @@ class QuadraticForm:
         """The reduction as a dict (`qdot form --format json`)."""
         return json.loads(self._printed[1])
 
+    def _repr_html_(self):
+        from . import display
+        return display.fields(self.json(), "qdot form")
+
     def __repr__(self):
         return "QuadraticForm(%s, inertia=%r)" % (" + ".join(
             "(%s)*(%s)^2" % (c, y) for c, y in zip(self.coefficients, self.linear_forms)) or "0",
             self.inertia)
 
 
+def _variables(ctx, variables):
+    """The variables named (a list of names, or one name) read as `qdot form
+    --vars` reads them (qd_qform_vars_read): each a symbol's name, so a
+    constant (pi, e) or t' is refused, as is a name given twice.  A
+    qdot.ArgumentError (a ValueError) with the located message otherwise."""
+    if isinstance(variables, str):
+        variables = [variables]
+    if not all(isinstance(v, str) for v in variables):
+        raise TypeError("variables are names (str), not %r" % (variables,))
+    text = ", ".join(variables).encode()
+    xs = ffi.new("const qd_expr *[]", max(1, len(variables)))
+    count = ffi.new("size_t *")
+    st = lib.qd_qform_vars_read(ctx, text, xs, len(variables), count)
+    if st == lib.QD_ERR_NOMEM:
+        raise MemoryError("qdot: out of memory")
+    if st != 0:  # pi, e, t' (= 1), a name twice, none at all
+        diag = take_error(ctx)
+        raise ArgumentError(format_diag(diag, "variables", text), st)
+    return [xs[k] for k in range(count[0])]
+
+
 def quadratic_form(expr, variables):
     """Lagrange's reduction of the quadratic form expr (model-language text)
-    in the named variables; qdot.Error when it is not a quadratic form."""
+    in the named variables (a list of names, read as `qdot form --vars`
+    reads them); qdot.Error when it is not a quadratic form, a ValueError
+    (qdot.ArgumentError) when a variable is not a name: pi and e are
+    constants, not variables."""
     ctx = lib.qd_ctx_new()
     if not ctx:
         raise MemoryError("qdot: out of memory")
@@ -47,7 +75,7 @@ def quadratic_form(expr, variables):
         phi = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
         if not phi:
             raise Error(ffi.string(diag.message).decode() or "cannot read the form")
-        xs = [lib.qd_symbol(ctx, v.encode()) for v in variables]
+        xs = _variables(ctx, variables)
         f = lib.qd_qform_reduce(ctx, phi, len(xs), exprs(xs))
         if not f:
             raise Error(cstr(lib.qd_ctx_message(ctx)))
@@ -102,6 +130,10 @@ class Homogeneity:
     def json(self):
         return json.loads(self._printed[1])
 
+    def _repr_html_(self):
+        from . import display
+        return display.fields(self.json(), "qdot form --homogeneity")
+
     def __repr__(self):
         return "Homogeneity(%s%s)" % (self.verdict,
                                       ", degree=%s" % self.degree if self.degree else "")
@@ -120,14 +152,7 @@ def homogeneity(expr, variables):
         f = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
         if not f:
             raise Error(ffi.string(diag.message).decode() or "cannot read the function")
-        if isinstance(variables, str):
-            variables = [variables]
-        names = ", ".join(variables).encode()
-        xs_c = ffi.new("const qd_expr *[]", max(1, len(variables)))
-        count = ffi.new("size_t *")
-        if lib.qd_qform_vars_read(ctx, names, xs_c, len(variables), count) != 0:
-            raise ValueError(cstr(lib.qd_ctx_message(ctx)))  # pi, t' (= 1), a name twice
-        xs = [xs_c[k] for k in range(count[0])]
+        xs = _variables(ctx, variables)
         h = new("qd_homog")
         if lib.qd_homogeneity(ctx, f, len(xs), exprs(xs), h) != 0:
             raise Error(cstr(lib.qd_ctx_message(ctx)))
@@ -165,6 +190,10 @@ class Periods:
     def json(self):
         return json.loads(self._printed[1])
 
+    def _repr_html_(self):
+        from . import display
+        return display.fields(self.json(), "qdot form --periods")
+
     def __repr__(self):
         return "Periods(fundamental=%r)" % (self.fundamental,)
 
@@ -177,8 +206,6 @@ def periods(expr, variables, shifts):
     qdot.Error when the shifts are not commensurable."""
     if not isinstance(shifts, str):
         shifts = "; ".join(", ".join(str(c) for c in v) for v in shifts)
-    if isinstance(variables, str):
-        variables = [variables]
     ctx = lib.qd_ctx_new()
     if not ctx:
         raise MemoryError("qdot: out of memory")
@@ -188,13 +215,11 @@ def periods(expr, variables, shifts):
         f = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
         if not f:
             raise Error(ffi.string(diag.message).decode() or "cannot read the function")
-        xs = ffi.new("const qd_expr *[]", max(1, len(variables)))
-        n, g = ffi.new("size_t *"), ffi.new("size_t *")
-        if lib.qd_qform_vars_read(ctx, ", ".join(variables).encode(), xs, len(variables), n) != 0:
+        xl = _variables(ctx, variables)
+        xs, g = exprs(xl), ffi.new("size_t *")
+        if lib.qd_periods_vectors_read(ctx, shifts.encode(), len(xl), g, w) != 0:
             raise ValueError(cstr(lib.qd_ctx_message(ctx)))
-        if lib.qd_periods_vectors_read(ctx, shifts.encode(), n[0], g, w) != 0:
-            raise ValueError(cstr(lib.qd_ctx_message(ctx)))
-        p = lib.qd_periods_reduce(ctx, f, n[0], xs, g[0], w[0])
+        p = lib.qd_periods_reduce(ctx, f, len(xl), xs, g[0], w[0])
         if not p:
             raise Error(cstr(lib.qd_ctx_message(ctx)))
         try:

@@ -12,21 +12,23 @@ import numpy as np
 
 from ._core import (ArgumentError, Core, Error, ModelError, NumericalError, format_diag,
                     name_of)
-from ._lib import (ffi, lib, new, buf_text, cstr, exprs, doubles, QD_FMT_SYMPY, QD_FMT_LATEX,
+from ._lib import (ffi, lib, new, buf_text, cstr, exprs, QD_FMT_SYMPY, QD_FMT_LATEX,
                    QD_FMT_TEXT)
 from . import sim as _sim
 from . import runs as _runs
 from . import control as _control
 from . import commands as _commands
 from . import linear as _linear
+from . import _progress
 
 
 class _Printed:
     """The renderings of a whole system (qdot/render.h), as `qdot eom
     --format F` prints them: text(), latex(), sympy_text(), c_code() and
-    json() (a dict).  at={name: value} (text and JSON): the numbers at that
-    state, the names as `qdot eom --at` takes them (q, q', t, parameters;
-    with speeds the speeds), the others at the model's initial values."""
+    json() (a dict).  at={name: value} or text (text and JSON): the numbers
+    at that state, read by the library as `qdot eom --at` reads it (q, q',
+    t, parameters; with speeds the speeds; the names not given at 0), an
+    error in it a qdot.ModelError shown in its text."""
 
     _print = None  # set by Model: (format name, at) -> str
 
@@ -144,6 +146,9 @@ class Equilibrium:
     def __repr__(self):
         return "Equilibrium(q=%r, kind=%r)" % (self.q, self.kind)
 
+    def _repr_html_(self):
+        return _equilibria_html([self], "qdot equilibrium")
+
 
 class Equilibria(list):
     """The equilibria found (a list of Equilibrium); .output is the
@@ -162,6 +167,26 @@ class Equilibria(list):
             return out[name]
         raise AttributeError("Equilibria has no field %r" % name)
 
+    def __repr__(self):
+        return "<qdot.Equilibria %d: %s>" % (len(self), "; ".join(
+            "%s %s" % (e.kind, ", ".join("%s = %.6g" % kv for kv in e.q.items())) for e in self))
+
+    def _repr_html_(self):
+        return _equilibria_html(self, "qdot equilibria")
+
+
+def _equilibria_html(eqs, title):
+    """A table of equilibria: a row each, the coordinates' values, the
+    kind, the exact values (as the library printed them) and the residual."""
+    from . import display
+    if not eqs:
+        return display.block(title, "none found")
+    names = list(eqs[0].q)
+    rows = [[e.q[k] for k in names] + [e.kind, ", ".join(
+        "%s = %s" % kv for kv in e.exact.items()) if e.exact else None, e.residual]
+        for e in eqs]
+    return display.block(title, display.table(names + ["kind", "exact", "residual"], rows))
+
 
 class Mode:
     """One normal mode (qdot/modes.h): omega2 the eigenvalue w^2 of
@@ -176,6 +201,10 @@ class Mode:
 
     def __repr__(self):
         return "Mode(omega=%.12g, shape=%r)" % (self.omega, self.shape)
+
+    def _repr_html_(self):
+        from . import display
+        return display.fields({"omega": self.omega, "omega2": self.omega2, "shape": self.shape})
 
 
 class Modes(list):
@@ -210,6 +239,49 @@ class Modes(list):
             return out[name]
         raise AttributeError("Modes has no field %r" % name)
 
+    def __repr__(self):
+        about = ", ".join("%s = %.6g" % kv for kv in (self.about or {}).items())
+        if not self.conservative:
+            return "<qdot.Modes about %s: eigenvalues %s>" % (about, np.round(
+                self.eigenvalues, 6).tolist())
+        return "<qdot.Modes about %s: omega = %s>" % (
+            about, ", ".join("%.10g" % m.omega for m in self))
+
+    def _repr_html_(self):
+        """The modes as a table (omega^2, omega, the shape's entries), or the
+        eigenvalues when the system is not conservative."""
+        from . import display
+        about = ", ".join("%s = %s" % (k, display.number(v))
+                          for k, v in (self.about or {}).items())
+        verdict = {1: "stable", 0: "unstable", -1: "borderline"}.get(self.stable, "")
+        title = "qdot modes about %s (%s)" % (about, verdict)
+        eig = display.table(["Re s", "Im s"], [[z.real, z.imag] for z in self.eigenvalues],
+                            caption="eigenvalues s of the state-space form")
+        if not len(self):
+            return display.block(title, eig)
+        names = list(self[0].shape)
+        rows = [[m.omega2, m.omega] + [m.shape[k] for k in names] for m in self]
+        return display.block(title, display.table(["omega^2", "omega"] + names, rows,
+                                                  caption="shapes normalized a^T M a = 1"),
+                             eig)
+
+
+class Metric:
+    """What Model.metric returns: its attributes are given by name (see
+    Model.metric); in Jupyter the table of `qdot metric --format json`."""
+
+    __module__ = "qdot"
+
+    def __init__(self, **fields):
+        self.__dict__.update(fields)
+
+    def __repr__(self):
+        return "<qdot.Metric of %s: det g = %s%s>" % (
+            ", ".join(self.coordinates), self.det, ", orthogonal" if self.orthogonal else "")
+
+    def _repr_html_(self):
+        return self.output.html()
+
 
 class _SpeedsHandle:
     """A qd_speeds_eom kept while a SpeedsEquations uses it."""
@@ -236,34 +308,31 @@ def _speeds_result(core, se, method):
                            [text(e.f[r]) for r in range(m)], method)
 
 
-def _state_at(core, at, extra):
-    """syms, vals of the model's initial state (the speeds in extra at 0)
-    with the values of at put in, by name."""
-    syms, vals = core.state()
-    syms, vals = syms + list(extra), vals + [0.0] * len(extra)
-    index = {core.text_of(s): i for i, s in enumerate(syms)}
-    for name, value in at.items():
-        if name not in index:
-            raise Error("at: '%s' is not a name of the state (%s)" % (name, ", ".join(index)))
-        vals[index[name]] = float(value)
-    return syms, vals
-
-
 def _render_lagrange(core, fmt, at):
     """qd_render_eom of Lagrange's equations of a model that declares
-    `speeds` (`qdot eom` renders its speeds form: Model.speeds_eom), at's
-    names read by _state_at."""
+    `speeds` (`qdot eom` renders its speeds form: Model.speeds_eom).  at
+    ({name: value} or text) is read by the library's state reader as
+    `qdot eom --at` reads it on a model without speeds (qd_state_init: the
+    names not given at 0; qd_state_read), an error in it a ModelError
+    shown in its text (file `at`)."""
+    from .linear import located
     k = new("qd_render_format")
     if not lib.qd_render_format_parse(fmt.encode(), k):
         raise ValueError("eom: no format %r" % (fmt,))
     source = ffi.new("char[]", core.file.encode())
     opts = new("qd_render_opts", {"source": source})
-    if at:
-        syms, vals = _state_at(core, at, [])
-        csyms, cvals = exprs(syms), doubles(vals)  # alive for the call
-        opts.nstate, opts.syms, opts.vals = len(syms), csyms, cvals
-    return _commands.rendered(core, lambda buf: lib.qd_render_eom(
-        core.ctx, core.model, core.eom_ptr(), opts, k[0], buf))
+    st = new("qd_state")
+    try:
+        if at:
+            text = _commands.text_arg(at, "at")
+            core.check(lib.qd_state_init(core.ctx, core.model, st))
+            if lib.qd_state_read(core.ctx, core.model, st, text, ffi.NULL) != lib.QD_OK:
+                raise located(core, "at", ffi.string(text))
+            opts.nstate, opts.syms, opts.vals = st.n, st.syms, st.vals
+        return _commands.rendered(core, lambda buf: lib.qd_render_eom(
+            core.ctx, core.model, core.eom_ptr(), opts, k[0], buf))
+    finally:
+        lib.qd_state_free(st)
 
 
 def _render(core, fmt, at, speeds=None):
@@ -462,7 +531,6 @@ class Model:
         chart) are attributes too, .json is the whole dict and .output its
         qdot.Output; force: "G1, G2, ..." the covariant components of a
         force, as --force (default: the model's Q)."""
-        import types
         core = self._for("metric")
         g = lib.qd_metric_new(core.ctx, core.model)
         if not g:
@@ -484,7 +552,7 @@ class Model:
                 core.check(lib.qd_metric_force_read(core.ctx, g, force.encode(), G))
             out = _commands.output(core, "metric", lambda buf: lib.qd_metric_json(
                 core.ctx, g, G if force is not None else ffi.NULL, buf))
-            ns = types.SimpleNamespace(
+            ns = Metric(
                 coordinates=names, source="L" if m.from_L else "T",
                 T2=conv(m.T2), T1=conv(m.T1), T0=conv(m.T0),
                 metric=mat(m.g), metric_inverse=mat(m.ginv), det=conv(m.det),
@@ -789,43 +857,44 @@ class Model:
         with parameter, range, steps, samples and transitions."""
         from .linear import located
         core = self._for("stability")
-        if steps is not None and scan is None:
-            raise ValueError("stability: steps is the number of steps of scan: give "
-                             "scan=\"NAME=A:B\"")
-        if isinstance(ignore, (list, tuple)):
-            ignore = ", ".join(ignore)
-        items = [driven] if isinstance(driven, str) else list(driven or [])
-        texts = {k: _commands.text_arg(v, k) for k, v in
-                 (("ignore", ignore), ("momentum", momentum), ("omega", omega), ("at", at),
-                  ("guess", guess))}
-        keep = [_commands.text_arg(x, "driven") for x in items]
-        dr = ffi.new("const char *[]", keep) if keep else ffi.NULL
-        c = lambda k: texts[k] if texts[k] is not None else ffi.NULL  # noqa: E731
-        spec = new("qd_stability_spec", {"ignore": c("ignore"), "driven": dr,
-                                         "ndriven": len(keep), "momentum": c("momentum"),
-                                         "omega": c("omega"), "at": c("at"),
-                                         "guess": c("guess")})
-        p = new("qd_stability_problem")
-        try:
-            if lib.qd_stability_problem_read(core.ctx, core.model, core.eom_ptr(), spec,
-                                             p) != lib.QD_OK:
-                d = lib.qd_ctx_diag(core.ctx)
-                field = ffi.string(d.name).decode()
-                text = p.driven if field == "driven" else texts.get(field)
-                if d.located and text:
-                    raise located(core, field, ffi.string(text))
-                raise core.error(cls=ArgumentError if d.status == lib.QD_ERR_ARG else None)
-            src = _commands.source(core)
-            if scan is not None:
-                return self._stability_scan(core, p, scan, steps, src)
-            core.check(lib.qd_stability_problem_solve(core.ctx, p), NumericalError)
-            rep = new("qd_stability_report", {"s": p.s, "given": ffi.addressof(p.given),
-                                              "set": ffi.addressof(p.set), "an": p.an,
-                                              "model": src})
-            return _commands.output(core, "stability", lambda buf: lib.qd_stability_print(
-                core.ctx, rep, True, buf))
-        finally:
-            lib.qd_stability_problem_free(p)
+        with _progress.watch(core, "stability"):  # the multistart's steps, Ctrl-C
+            if steps is not None and scan is None:
+                raise ValueError("stability: steps is the number of steps of scan: give "
+                                 "scan=\"NAME=A:B\"")
+            if isinstance(ignore, (list, tuple)):
+                ignore = ", ".join(ignore)
+            items = [driven] if isinstance(driven, str) else list(driven or [])
+            texts = {k: _commands.text_arg(v, k) for k, v in
+                     (("ignore", ignore), ("momentum", momentum), ("omega", omega), ("at", at),
+                      ("guess", guess))}
+            keep = [_commands.text_arg(x, "driven") for x in items]
+            dr = ffi.new("const char *[]", keep) if keep else ffi.NULL
+            c = lambda k: texts[k] if texts[k] is not None else ffi.NULL  # noqa: E731
+            spec = new("qd_stability_spec", {"ignore": c("ignore"), "driven": dr,
+                                             "ndriven": len(keep), "momentum": c("momentum"),
+                                             "omega": c("omega"), "at": c("at"),
+                                             "guess": c("guess")})
+            p = new("qd_stability_problem")
+            try:
+                if lib.qd_stability_problem_read(core.ctx, core.model, core.eom_ptr(), spec,
+                                                 p) != lib.QD_OK:
+                    d = lib.qd_ctx_diag(core.ctx)
+                    field = ffi.string(d.name).decode()
+                    text = p.driven if field == "driven" else texts.get(field)
+                    if d.located and text:
+                        raise located(core, field, ffi.string(text))
+                    raise core.error(cls=ArgumentError if d.status == lib.QD_ERR_ARG else None)
+                src = _commands.source(core)
+                if scan is not None:
+                    return self._stability_scan(core, p, scan, steps, src)
+                core.check(lib.qd_stability_problem_solve(core.ctx, p), NumericalError)
+                rep = new("qd_stability_report", {"s": p.s, "given": ffi.addressof(p.given),
+                                                  "set": ffi.addressof(p.set), "an": p.an,
+                                                  "model": src})
+                return _commands.output(core, "stability", lambda buf: lib.qd_stability_print(
+                    core.ctx, rep, True, buf))
+            finally:
+                lib.qd_stability_problem_free(p)
 
     def _stability_scan(self, core, p, scan, steps, src):
         """stability(scan=...): qd_stability_problem_scan and its JSON."""
@@ -1067,19 +1136,29 @@ class Model:
         return _commands.output(core, "check", lambda buf: lib.qd_render_check(
             core.ctx, core.model, core.eom_ptr(), o, v, lib.QD_RENDER_JSON, buf))
 
-    def equilibria(self, near=None, box=None):
+    def equilibria(self, guess=None, box=None, *, near=None):
         """Every equilibrium found (an Equilibria: a list of Equilibrium,
         sorted by q), as `qdot equilibria` finds them (qd_equilibria_find_text
         on the equations with the holonomic constraints eliminated): exact
         where the equations solve in closed form, else by a multi-start
-        Newton search over the default box.  near ({coordinate: value} or
-        "q1=VALUE, ..."; an Equilibrium): Newton from there only, as --near;
+        Newton search over the default box.  guess ({coordinate: value} or
+        "q1=VALUE, ..."; an Equilibrium): Newton from there only, as --guess
+        (near= is its old name, still taken with a DeprecationWarning);
         box ({coordinate: (low, high)} or "q1=LOW:HIGH, ..."): the numeric
         search there, as --box.  Its other attributes are the keys of `qdot
         equilibria --format json` (qd_equilibria_print): method, exact,
         continuum, equilibria (each with equilibrium, exact, kind,
         hessian_signs, symmetric, residual); .json is that dict."""
-        return _linear.equilibria(self._for("equilibria"), near, box)
+        if near is not None:
+            import warnings
+            warnings.warn("equilibria(near=) is now equilibria(guess=): the starting point of a "
+                          "search, as in stability and path", DeprecationWarning, stacklevel=2)
+            if guess is not None:
+                raise TypeError("equilibria: give guess, not both guess and near")
+            guess = near
+        core = self._for("equilibria")
+        with _progress.watch(core, "equilibria"):  # the multistart's steps, Ctrl-C
+            return _linear.equilibria(core, guess, box)
 
     def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False,
               independent=None, scan=None, steps=None):
@@ -1115,8 +1194,10 @@ class Model:
         (--steps; 200 by default), and where its stability changes
         (qd_modes_scan_text): a qdot.Output with parameter, range, steps,
         samples and transitions, not a Modes."""
-        return _linear.modes(self._for("modes"), about, at_equilibrium, initial, symmetry,
-                             independent, scan, steps)
+        core = self._for("modes")
+        with _progress.watch(core, "modes"):  # the multistart's steps, Ctrl-C
+            return _linear.modes(core, about, at_equilibrium, initial, symmetry, independent,
+                                 scan, steps)
 
     def linearize(self, about=None):
         """The state-space form about an operating point (a StateSpace, from

@@ -68,6 +68,11 @@ class Result:
         return "%s(%s)" % (type(self).__name__, ", ".join(
             "%s=%r" % kv for kv in sorted(vars(self).items())))
 
+    def _repr_html_(self):
+        from . import display
+        data = vars(self).get("json") or dict(sorted(vars(self).items()))  # the command's JSON
+        return display.fields(data, "qdot " + type(self).__name__)
+
 
 def _particle(ctx, c, spec):
     """(m, v), {"m": .., "v": ..} or a Particle into a Particle."""

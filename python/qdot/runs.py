@@ -142,7 +142,7 @@ def poincare(core, section, crossings, t_end, method, rtol, atol, dt, step, init
         for k, text in enumerate(texts):
             res = Result(columns, rows[k], 0, ffi.addressof(r[k], "stats"),
                          cstr(lib.qd_sim_method_name(opts.method)), ndof=lib.qd_sim_ndof(s))
-            res._section, res.label = True, text
+            res._section, res.label, res._command = True, text, "poincare"
             out.append(res)
         run.partial = out if several else out[0]
         for k in range(len(orbits)):

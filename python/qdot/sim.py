@@ -51,6 +51,14 @@ class Table:
         """The column names."""
         return list(self.columns)
 
+    def __repr__(self):
+        return "<qdot.Table %d rows: %s>" % (len(self), ", ".join(self.columns))
+
+    def _repr_html_(self):
+        """The rows under their column names (the first ones of a long run)."""
+        from . import display
+        return display.table(self.columns, self.data.tolist(), caption="%d rows" % len(self))
+
 
 class Result(Table):
     """What Model.simulate returns: the sampled rows (a Table), plus
@@ -197,6 +205,25 @@ class Result(Table):
     def _repr_png_(self):
         """Jupyter shows a run as its plot (every coordinate against t)."""
         return self.png() if len(self) else None
+
+    def _repr_html_(self):
+        """Jupyter shows a run as its plot (the PNG above, inline as a data
+        URI: no file, no network) over its summary and its first rows."""
+        import base64
+        from . import display
+        parts = []
+        if len(self):
+            try:
+                parts.append('<img alt="the run\'s plot" src="data:image/png;base64,%s"/>'
+                             % base64.b64encode(self.png()).decode())
+            except Error:  # a plot the library refuses (no column to draw): the table only
+                pass
+        info = {"method": self.method, "rows": len(self), "stop": self.stop["reason"],
+                "energy_error_max": self.energy_error_max}
+        if self.events:
+            info["events"] = [len(e) for e in self.events]
+        parts += [display.fields(info), Table._repr_html_(self)]
+        return display.block("qdot " + getattr(self, "_command", "simulate"), *parts)
 
     def plot(self, y=None, phase=None, ax=None):
         """A matplotlib figure of the same columns as png() (for users who
@@ -467,6 +494,9 @@ class Rhs:
         self._work = lib.qd_eom_work_new(core.ctx, self._prog)
         if not self._work:
             raise core.error()
+
+    def __repr__(self):
+        return "<qdot.Rhs %s: y = (q, q') of %s>" % (self._core.file, ", ".join(self.coordinates))
 
     def __call__(self, t, y):
         """(q', q'') at time t and state y = (q, q')."""

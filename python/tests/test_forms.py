@@ -21,6 +21,25 @@ def test_not_quadratic():
         qdot.quadratic_form("x^2 + x", ["x"])
 
 
+def test_quadratic_form_refuses_constants():
+    # pi is the constant 3.14159..., not a variable: it was taken as a
+    # symbol of that name, absent from the form, and the reduction failed
+    # with "a term of degree other than 2" instead of saying why (issue 32)
+    for names, bad in ((["x", "pi"], "pi"), (["e", "x"], "e"), (["x", "x"], "x")):
+        with pytest.raises(ValueError) as err:
+            qdot.quadratic_form("x^2 + pi*y^2", names)
+        assert isinstance(err.value, qdot.Error)
+        assert ("'%s' is not a variable name" % bad in str(err.value)
+                or "'%s' is given twice" % bad in str(err.value))
+        assert str(err.value).startswith("variables:1:")
+    # the variables as --vars reads them: the reduction is the same
+    f = qdot.quadratic_form("x^2 + 4*x*y + y^2", "x y".split())
+    assert f.coefficients == ["1", "-3"]
+    # pi as a coefficient is the positive constant: Sylvester's inertia decided
+    f = qdot.quadratic_form("x^2 - pi*y^2", ["x", "y"])
+    assert f.inertia == (1, 1, 0) and f.kind == "indefinite"
+
+
 def test_homogeneity_euler():
     # Desloge App. 20 (seed-desloge-D.md T27): T in the velocities has
     # degree 2, so sum q' dT/dq' = 2T

@@ -8,6 +8,7 @@
 # KeyboardInterrupt, never a crash nor "Exception ignored".
 import math
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -116,6 +117,134 @@ def test_animate_stopped_keeps_the_page_so_far(monkeypatch):
     x = np.asarray(a.json["pos"]).reshape(len(t), 3)[:, 0]   # the page's 7 digits
     assert np.max(np.abs(x - (0.1 * np.cos(3 * t) + 0.2 / 3 * np.sin(3 * t)))) < 1e-6
     assert "<html" in a.html.lower()
+
+
+# a potential whose equilibria have no closed form: the library's
+# multistart finds them (cos x + x^2/10: three in x, y = 0 the minimum)
+MULTISTART = ("coordinates x, y\nT = (x'^2 + y'^2)/2\n"
+              "V = cos(x) + x^2/10 + cos(y)*y^2/50 + y^2/7\n")
+
+
+@pytest.fixture
+def counted():
+    """qdot.set_progress with a function that counts each call's reports
+    (and checks each is a fraction 0..1)."""
+    calls = {}
+
+    def count(what, frac, value):
+        seen = calls.setdefault(what, [])
+        assert 0.0 <= frac <= 1.0, (what, frac)
+        seen.append(frac)
+    old = qdot.set_progress(count)
+    yield calls
+    qdot.set_progress(old)
+
+
+def test_every_long_call_reports_its_progress(counted):
+    osc = qdot.Model(OSCILLATOR)
+    r = osc.simulate(10, rtol=1e-10, dt=0.5)
+    osc.poincare("x = 0, x' > 0", 5, rtol=1e-10)
+    osc.sweep(1, "final", grid="k=1:3:5", threads=1)
+    osc.lyapunov(20, renorm=1)
+    qdot.Model(OSCILLATOR_DRAWN).animate(2)
+    ms = qdot.Model(MULTISTART)
+    eqs = ms.equilibria()
+    ms.modes()
+    assert eqs.method == "multistart" and len(eqs) == 3
+    for what in ("simulate", "poincare", "sweep", "lyapunov", "animate",
+                 "equilibria: multistart"):
+        assert counted.get(what), (what, sorted(counted))
+    assert counted["sweep"][-1] == 1.0            # the fifth run of five
+    assert len(counted["equilibria: multistart"]) >= 2 * 2   # one a start, modes' too
+    # the rows are the motion whatever is drawn: x = cos(w t), w = sqrt(k/m)
+    assert r["x"] == pytest.approx(np.cos(math.sqrt(1.5) * r.t), abs=1e-8)
+
+
+def test_a_progress_function_stops_the_call():
+    old = qdot.set_progress(lambda what, frac, value: frac > 0.3)
+    try:
+        with pytest.raises(KeyboardInterrupt, match="simulate") as err:
+            qdot.Model(OSCILLATOR).simulate(100, rtol=1e-12, dt=0.5)
+        r = err.value.result
+        assert 30 <= r.t[-1] < 100                     # the rows up to the stop
+        assert r["x"] == pytest.approx(np.cos(math.sqrt(1.5) * r.t), abs=1e-7)
+        with pytest.raises(KeyboardInterrupt, match="equilibria: multistart"):
+            qdot.Model(MULTISTART).equilibria()        # the library told to stop
+        # the context works on: the same search, not stopped, is whole
+        qdot.set_progress(None)
+        assert len(qdot.Model(MULTISTART).equilibria()) == 3
+    finally:
+        qdot.set_progress(old)
+
+    def broken(what, frac, value):
+        raise RuntimeError("from the progress function")
+    old = qdot.set_progress(broken)
+    try:
+        with pytest.raises(RuntimeError, match="from the progress function"):
+            qdot.Model(OSCILLATOR).simulate(10, dt=0.5)
+    finally:
+        qdot.set_progress(old)
+    with pytest.raises(TypeError):
+        qdot.set_progress(3)
+
+
+def test_sigint_stops_the_multistart_search():
+    """Ctrl-C during the multistart (the handler's flag, seen by the
+    context's progress function) stops the library at its next start:
+    KeyboardInterrupt, the handler restored, the model usable after."""
+    def press(what, frac, value):  # Ctrl-C once, a few starts in
+        if frac > 0.05 and not press.sent:
+            press.sent = True
+            signal.raise_signal(signal.SIGINT)
+        press.after += press.sent
+    press.sent, press.after = False, 0
+    old = qdot.set_progress(press)
+    try:
+        m = qdot.Model(MULTISTART)
+        with pytest.raises(KeyboardInterrupt, match="equilibria: multistart"):
+            m.equilibria()
+        assert press.sent and press.after <= 2          # stopped at the next step
+        assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    finally:
+        qdot.set_progress(old)
+    assert len(m.equilibria()) == 3
+
+
+def test_notebook_shows_an_updating_line(monkeypatch):
+    """In an IPython kernel (stderr no terminal) the bar is one display,
+    updated in place and cleared at the end; IPython is only imported
+    there, so a fake kernel stands for Jupyter here."""
+    import types
+    shown = []
+
+    class Handle:
+        def update(self, obj):
+            shown.append(("update", obj.data))
+
+    def display(obj, display_id=False):
+        assert display_id is True
+        shown.append(("display", obj.data))
+        return Handle()
+
+    class HTML:
+        def __init__(self, data):
+            self.data = data
+    kernel = types.SimpleNamespace(kernel=object())
+    ipy = types.ModuleType("IPython")
+    ipy.get_ipython = lambda: kernel
+    ipd = types.ModuleType("IPython.display")
+    ipd.display, ipd.HTML = display, HTML
+    ipy.display = ipd
+    monkeypatch.setitem(sys.modules, "IPython", ipy)
+    monkeypatch.setitem(sys.modules, "IPython.display", ipd)
+    monkeypatch.setenv("QDOT_PROGRESS_DELAY", "0")
+    qdot.Model(OSCILLATOR).poincare("x = 0, x' > 0", 50, rtol=1e-12)
+    assert shown[0][0] == "display" and len(shown) >= 3
+    assert all(kind == "update" for kind, _ in shown[1:])
+    assert "<progress" in shown[1][1] and "qdot: poincare" in shown[1][1]
+    assert shown[-1] == ("update", "")                  # cleared at the end
+    values = [float(re.search(r'value="([0-9.]+)"', d).group(1)) for _, d in shown[:-1]]
+    assert values == sorted(values) and values[-1] <= 1
 
 
 CHILD = r"""

@@ -107,3 +107,28 @@ def test_quadratic_form_printers():
     assert f.json()["inertia"] == {"positive": 1, "negative": 1, "zero": 0}
     assert f.json()["matrix"] == [["1", "2"], ["2", "1"]]
     assert "n+ = 1, n- = 1, n0 = 0" in f.text()
+
+
+def test_lagrange_form_of_a_speeds_model_at_a_state_read_by_the_library():
+    # The rolling disk's equations in q, q' (Model.eom of a model with
+    # `speeds`): at= read by the library's state reader (qd_state_read, as
+    # `qdot eom --at`), so "pi/6" is exact text and a bad name is located.
+    # f[q2] = m r (4 g sin q2 + 2 q1' q3' r cos q2 + 5 q1'^2 r sin q2 cos q2)/4
+    # (the model's forcing, written out), f[y] = -m r q1'^2 sin q2 cos q1.
+    e = qdot.Model.load(os.path.join(EXAMPLES, "rolling_disk_speeds.qd")).eom()
+    m_, r, g, q2, w = 1.4, 0.35, 9.81, math.pi / 6, 2.0
+    for at in ("q2=pi/6, q1'=2", {"q2": "pi/6", "q1'": 2}):
+        j = e.json(at=at)
+        assert j["state"]["q2"] == pytest.approx(q2, rel=1e-15)
+        assert j["forcing"][3] == pytest.approx(
+            m_ * r * (4 * g * math.sin(q2) + 5 * w**2 * r * math.sin(q2) * math.cos(q2)) / 4,
+            rel=1e-13)
+        assert j["forcing"][1] == pytest.approx(-m_ * r * w**2 * math.sin(q2), rel=1e-13)
+    for bad, col, words in (("q2=1, thet=2", 7, "unknown name 'thet'"),
+                            ("q2=2*/3", 6, "expected an expression"),
+                            ("q2=1, q2=2", 7, "'q2' is given twice"),
+                            ("u1=1", 1, "'u1' is a speed")):
+        with pytest.raises(qdot.ModelError) as err:
+            e.text(at=bad)
+        assert (err.value.file, err.value.line, err.value.col) == ("at", 1, col)
+        assert words in str(err.value) and "^" in str(err.value)

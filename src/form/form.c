@@ -38,10 +38,12 @@ static qd_qform *qform_alloc(qd_ctx *ctx, size_t n) {
 }
 
 /* The sign of c where it is known for every value of its positive symbols
- * (1 or -1), else 0. */
+ * (1 or -1), else 0.  The constants pi and e are positive. */
 static int known_sign(const qd_expr *c) {
     if (qd_is_number(c))
         return qd_number_sign(c);
+    if (qd_expr_kind(c) == QD_CONSTANT)
+        return 1;
     if (qd_expr_kind(c) == QD_SYMBOL)
         return qd_symbol_is_positive(c) ? 1 : 0;
     if (qd_expr_kind(c) == QD_POW) {

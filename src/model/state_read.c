@@ -192,13 +192,29 @@ qd_status qd_state_value(qd_ctx *ctx, const qd_model *m, const char *text, size_
 
 /* ---- a name ------------------------------------------------------------------ */
 
-/* The coordinates (and speeds) in words, for "unknown name". */
-static void put_known(const qd_model *m, qd_buf *b) {
+/* The coordinates (and the speeds that are slots of st) in words, for
+ * "unknown name": a state of q, q' (Lagrange's form of a model with
+ * speeds) does not take its speeds, so it does not name them. */
+static void put_known(const qd_model *m, const qd_state *st, qd_buf *b) {
     for (size_t i = 0; i < qd_model_ncoords(m); i++)
         qd_buf_printf(b, "%s%s", i ? ", " : "", qd_expr_name(qd_model_coord(m, i)));
+    size_t listed = 0;
     for (size_t i = 0; i < qd_model_nspeeds(m); i++)
-        qd_buf_printf(b, "%s%s", i ? ", " : "; the speeds are ",
-                      qd_expr_name(qd_model_speed(m, i)));
+        if (qd_state_find(st, qd_model_speed(m, i)) < st->n)
+            qd_buf_printf(b, "%s%s", listed++ ? ", " : "; the speeds are ",
+                          qd_expr_name(qd_model_speed(m, i)));
+}
+
+/* The model's speed named name[0, len) that st has no slot for, or NULL. */
+static const qd_expr *absent_speed(const qd_model *m, const qd_state *st, const char *name,
+                                   size_t len) {
+    for (size_t i = 0; i < qd_model_nspeeds(m); i++) {
+        const qd_expr *u = qd_model_speed(m, i);
+        const char *s = qd_expr_name(u);
+        if (strlen(s) == len && !strncmp(s, name, len) && qd_state_find(st, u) == st->n)
+            return u;
+    }
+    return NULL;
 }
 
 /* "did you mean": the nearest coordinate (with the primes written),
@@ -300,10 +316,14 @@ static qd_status resolve(qd_ctx *ctx, const qd_model *m, const qd_state *st, con
         *slot = k;
         return QD_OK;
     }
+    if (!primes && absent_speed(m, st, name, base))
+        return fail(ctx, text, a, len, "give the coordinates and their velocities (q')",
+                    "'%.*s' is a speed: this state is of the coordinates and their velocities, "
+                    "not of the speeds", w, name);
     char hint[192];
     nearest_hint(m, st, name, base, primes, hint, sizeof hint);
     qd_buf b = QD_BUF_INIT;
-    put_known(m, &b);
+    put_known(m, st, &b);
     qd_status s = fail(ctx, text, a, len, hint[0] ? hint : NULL,
                        "unknown name '%.*s' (the coordinates are %s; velocities are written "
                        "with a prime, and %s is the %s)", w, name,

@@ -4,6 +4,7 @@
  * measures every method reports.
  */
 #include "simint.h"
+#include "sym/sym_export.h"
 #include "../base/mem.h"
 #include "../base/args.h"
 
@@ -1006,7 +1007,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     }
     stats->steps = it.steps;
     stats->evals = s->evals;
-    stats->jit = s->acc && qd_prog_jitted(s->acc);
+    stats->jit = s->acc && (qd_prog_jitted(s->acc) || qd__prog_spd(s->acc));
     stats->rejected = it.rejected;
     stats->E0 = ms.E0;
     double den = fmax(fabs(ms.E0), ms.Tmax);
@@ -1053,8 +1054,10 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
     qd_status st = qd__sim_ws_alloc(&w, ctx);
     w.jit_mode = o->jit;
     w.jit_tried = false;
+    w.jit_t0 = o->t0;
+    w.jit_t1 = o->t_end;
     if (st == QD_OK && o->jit == QD_SIM_JIT_ON)
-        qd__sim_jit_tier(&w, true);
+        qd__sim_jit_tier(&w, true, o->t0);
     if (st == QD_OK && o->par)
         use_par(&w, o->par);
     if (st == QD_OK)

@@ -126,6 +126,7 @@ struct qd_sim {
      * compiled (or tried to) */
     int jit_mode;
     bool jit_tried;
+    double jit_t0, jit_t1; /* the run's span, to predict its length */
     double *con_err;  /* m: the worst residual of each constraint in this run */
     double tnow;  /* for messages */
     /* A run's own right-hand side in place of the form's, for a caller that

@@ -19,6 +19,7 @@
 
 #include "codegen/codegen_export.h"
 #include "num/num.h"
+#include "sym/sym_export.h"
 #include "base/mem.h"
 #include "../base/args.h"
 
@@ -761,7 +762,7 @@ static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *
     memcpy(s->K, M, n * n * sizeof *M);
     memcpy(r0, r, n * sizeof *r);
     memcpy(x, r0, n * sizeof *x);
-    if (qd__num_solve_spd(n, s->K, x, 1e-10))
+    if (qd__num_solve_spd(n, s->K, x, QD__SIM_SPD_TOL))
         return QD_OK;
     memcpy(s->K, M, n * n * sizeof *M);
     memcpy(x, r0, n * sizeof *x);
@@ -815,7 +816,13 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
         return QD_OK;
     }
     set_state(s, t, y, y + n);
-    qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
+    /* jitted with its solve (jit.c): M and f in acc_out either way, and
+     * solve_mass only where that solve's tests fail, to decide as always */
+    qd__jit_spd_fn spd = s->acc ? qd__prog_spd(s->acc) : NULL;
+    if (spd && spd(s->in, s->acc_out, dy + n))
+        return QD_OK;
+    if (!spd)
+        qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
     const double *M = s->acc_out, *f = M + n * n;
     return solve_mass(s, t, M, f, dy + n);
 }
@@ -877,7 +884,7 @@ static qd_status form_rhs(qd_sim *s, qd__sim_form form, double t, const double *
 
 qd_status qd__sim_rhs(qd_sim *s, qd__sim_form form, double t, const double *y, double *dy) {
     if ((++s->evals & 4095) == 0 && s->jit_mode == QD_SIM_JIT_AUTO && !s->jit_tried)
-        qd__sim_jit_tier(s, false);
+        qd__sim_jit_tier(s, false, t);
     if (s->ext_rhs)
         return s->ext_rhs(s->ext_data, t, y, dy);
     /* an input callback that failed ends the run: no more calls to it */

@@ -76,6 +76,31 @@ static void test_definite(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* x^2 - pi y^2 + e z^2: the coefficients' signs are those of the constants
+ * pi > 0 and e > 0, so Sylvester's inertia is decided, (2, 1, 0); it was
+ * "undecided (a coefficient of unknown sign)". */
+static void test_constant_coefficients(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    const qd_expr *x[3];
+    size_t n = 0;
+    assert_int_equal(qd_qform_vars_read(ctx, "x, y, z", x, 3, &n), QD_OK);
+    qd_qform *f = qd_qform_reduce(ctx, expr(ctx, "x^2 - pi*y^2 + e*z^2"), n, x);
+    assert_non_null(f);
+    assert_true(f->decided);
+    assert_int_equal(f->npos, 2);
+    assert_int_equal(f->nneg, 1);
+    assert_int_equal(f->nzero, 0);
+    assert_string_equal(f->kind, "indefinite");
+    qd_qform_free(f);
+    qd_qform *g = qd_qform_reduce(ctx, expr(ctx, "pi^2*x^2 + 2*y^2"), 2, x);
+    assert_non_null(g);
+    assert_true(g->decided);
+    assert_string_equal(g->kind, "positive definite");
+    qd_qform_free(g);
+    qd_ctx_free(ctx);
+}
+
 static void located(qd_ctx *ctx, const char *text, size_t cap, size_t off, size_t len,
                     const char *msg) {
     const qd_expr *x[4];
@@ -103,6 +128,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_indefinite),
         cmocka_unit_test(test_definite),
+        cmocka_unit_test(test_constant_coefficients),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

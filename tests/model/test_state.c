@@ -151,6 +151,40 @@ static void read_fails(fx *f, const char *text, qd_status want) {
     assert_int_equal(qd_state_read(f->ctx, f->m, &f->st, text, NULL), want);
 }
 
+/* A model with speeds read in q, q' (qd_state_init: no speed slots, as
+ * Python's Model.eom(at=) reads its Lagrange form): a speed named is
+ * refused as one, under its name, and an unknown name's list of names does
+ * not offer the speeds the state cannot take. */
+static void speeds_not_slots(void **state) {
+    (void)state;
+    static const char sleigh[] = "coordinates x, th\n"
+                                 "T = (x'^2 + th'^2)/2\n"
+                                 "speeds v = x', w = th'\n";
+    qd_ctx *ctx = qd_ctx_new();
+    qd_diag d;
+    qd_model *m = qd_model_parse(ctx, sleigh, &d);
+    assert_non_null(m);
+    fx f = {ctx, m, {0}};
+    assert_int_equal(qd_state_init(ctx, m, &f.st), QD_OK);
+    read_fails(&f, "x=1, w=2", QD_ERR_ARG);
+    expect_at(&f, "x=1, w=2", "w", 1, "'w' is a speed: this state is of the coordinates and "
+              "their velocities", NULL);
+    read_fails(&f, "ww=2", QD_ERR_ARG);
+    expect_at(&f, "ww=2", "ww", 2, "unknown name 'ww'", NULL);
+    assert_null(strstr(qd_ctx_diag(ctx)->message, "speeds"));
+    /* with the speeds appended (qd_state_append) they are slots again */
+    const qd_expr *u[2] = {qd_model_speed(m, 0), qd_model_speed(m, 1)};
+    assert_int_equal(qd_state_append(ctx, &f.st, 2, u, NULL), QD_OK);
+    qd_ctx_clear_error(ctx);
+    assert_int_equal(qd_state_read(ctx, m, &f.st, "w=2", NULL), QD_OK);
+    assert_true(at(&f, u[1]) == 2.0);
+    read_fails(&f, "ww=2", QD_ERR_ARG);
+    assert_non_null(strstr(qd_ctx_diag(ctx)->message, "the speeds are v, w"));
+    qd_state_free(&f.st);
+    qd_model_free(m);
+    qd_ctx_free(ctx);
+}
+
 /* A misspelt name: a caret under it and the nearest name, as in model files. */
 static void misspelt(void **state) {
     fx *f = *state;
@@ -287,6 +321,7 @@ int main(void) {
         cmocka_unit_test_setup_teardown(values, setup, teardown),
         cmocka_unit_test_setup_teardown(ranges, setup, teardown),
         cmocka_unit_test_setup_teardown(nulls, setup, teardown),
+        cmocka_unit_test(speeds_not_slots),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -11,7 +11,14 @@ against the physics, computed here:
   - the chaotic run: the energy conserved, the Lyapunov exponent positive
     beyond twice its error estimate;
   - the equations shown as LaTeX, the plot as a PNG (with matplotlib), the
-    animation as inline HTML.
+    animation as inline HTML;
+  - the top: the version the package reports is include/qdot/version.h's,
+    and the equations' LaTeX printed is what `qdot eom --format latex`
+    prints for the same model (run here on the model's text);
+  - the Kepler orbit (examples/kepler_polar.qd, m = 1.3, k = 4, from r = 1,
+    theta' = 1.5): E = m r^2 theta'^2/2 - k/r, a = -k/(2E), e^2 = 1 + 2 E
+    L^2/(m k^2), T = 2 pi sqrt(m a^3/k) (Desloge ch. 59), the apsidal angle
+    pi, and the simulated particle back at r = 1 after T, theta = 2 pi.
 
 Skips (77) when nbconvert or the kernel is missing.
 """
@@ -69,21 +76,36 @@ def main():
     errors = [o for outs in cells for o in outs if o["output_type"] == "error"]
     assert not errors, errors
 
+    # the top: the version, and the LaTeX the command line prints
+    with open(os.path.join(ROOT, "include", "qdot", "version.h")) as fh:
+        version = re.search(r'#define QDOT_VERSION "([^"]+)"', fh.read()).group(1)
+    assert text_of(cells[0]).split() == ["qdot", version], text_of(cells[0])
+    source = next(src for src in ("".join(c["source"]) for c in nb["cells"]
+                                  if c["cell_type"] == "code") if 'qdot.Model("""' in src)
+    model = re.search(r'qdot.Model\("""(.*?)"""\)', source, re.S).group(1)
+    with tempfile.NamedTemporaryFile("w", suffix=".qd") as fh:
+        fh.write(model)
+        fh.flush()
+        cli = subprocess.run([os.path.join(args.build, "qdot"), "eom", fh.name, "--format",
+                              "latex"], capture_output=True, text=True)
+    assert cli.returncode == 0, cli.stderr
+    assert text_of(cells[2]) == cli.stdout + "\n", (text_of(cells[2]), cli.stdout)
+
     # the equations, as LaTeX
-    eom = cells[0][0]["data"]
+    eom = cells[1][0]["data"]
     assert "\\ddot{\\theta}" in "".join(eom["text/latex"]), eom
 
     # H with l = 2 fixed in: p^2/(8 m) - 2 m g cos(theta)
     import sympy
-    H_text = text_of(cells[2]).splitlines()[0]
+    H_text = text_of(cells[4]).splitlines()[0]
     th, p, m, g = sympy.symbols("theta p_theta m g")
     H = sympy.sympify(H_text.replace("^", "**"), locals={"theta": th, "p_theta": p, "m": m,
                                                           "g": g})
     assert sympy.simplify(H - (p**2 / (2 * m * 4) - m * g * 2 * sympy.cos(th))) == 0, H_text
-    assert "text/latex" in cells[1][0]["data"]
+    assert "text/latex" in cells[3][0]["data"]
 
     # the modes
-    text = text_of(cells[3])
+    text = text_of(cells[5])
     omega2 = [float(x) for x in re.search(r"omega\^2 = \[([^\]]*)\]", text).group(1).split(",")]
     want = [9.81 * (2 - math.sqrt(2)), 9.81 * (2 + math.sqrt(2))]
     assert all(abs(a - b) <= 1e-9 * b for a, b in zip(omega2, want)), (omega2, want)
@@ -91,20 +113,38 @@ def main():
     assert abs(ratio - math.sqrt(2)) < 1e-9, ratio
 
     # the chaotic run
-    text = text_of(cells[4])
+    text = text_of(cells[6])
     err = float(re.search(r"energy error over the run: (\S+)", text).group(1))
     lam, lam_err = map(float, re.search(r"exponent: (\S+) \+- (\S+)", text).groups())
     assert err < 1e-8, err
     assert lam > 2 * lam_err > 0, (lam, lam_err)
 
     # the plot (with matplotlib) and the animation
-    plot = cells[5]
+    plot = cells[7]
     try:
         import matplotlib  # noqa: F401
         assert any("image/png" in o.get("data", {}) for o in plot), plot
     except ImportError:
         assert "matplotlib is not installed" in text_of(plot)
-    assert "<iframe srcdoc=" in "".join(cells[6][0]["data"]["text/html"])
+    assert "<iframe srcdoc=" in "".join(cells[8][0]["data"]["text/html"])
+
+    # the Kepler orbit, from the model's numbers
+    m, k, r0, w0 = 1.3, 4.0, 1.0, 1.5
+    E, L = m * r0**2 * w0**2 / 2 - k / r0, m * r0**2 * w0
+    a, e = -k / (2 * E), math.sqrt(1 + 2 * E * L**2 / (m * k**2))
+    T = 2 * math.pi * math.sqrt(m * a**3 / k)
+    text = text_of(cells[9])
+    got = lambda pat: float(re.search(pat, text).group(1))  # noqa: E731
+    assert "kind: bound" in text, text
+    assert abs(got(r"a = (\S+)") - a) < 1e-12 and abs(got(r" e = (\S+)") - e) < 1e-12, text
+    assert abs(got(r"radial period T = (\S+)") - T) < 1e-9 * T, (text, T)
+    assert abs(got(r"apsidal angle = (\S+)") - math.pi) < 1e-9, text
+    assert abs(got(r"turning points r = \[(\S+),") - a * (1 - e)) < 1e-9, text
+    assert any("text/html" in o.get("data", {}) for o in cells[9]), "no table of the orbit"
+    text = text_of(cells[10])
+    assert abs(got(r"after T: r = (\S+)") - r0) < 1e-8, text
+    assert abs(got(r" r' = (\S+)")) < 1e-8, text
+    assert abs(got(r"theta = (\S+)") - 2 * math.pi) < 1e-8, text
     print("ok: omega^2 = %s, lambda = %.3g +- %.2g, energy error %.2g" % (omega2, lam, lam_err,
                                                                          err))
     return 0
