@@ -26,6 +26,10 @@ extern "C" {
 QD_API qd_status qd_conlin_scan_plot(qd_ctx *ctx, const qd_conlin_scan *s, const char *name,
                                      const char *title, qd_plot **out);
 
+/* NULL (issue 30): qd_conlin_scan_plot given NULL for ctx, s, name or out
+ * does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is given);
+ * title may be NULL, as documented there. */
+
 #ifdef __cplusplus
 }
 #endif

@@ -307,7 +307,7 @@ typedef enum qd_stop_code {
     QD_STOP_PROJECTION,      /* the projection onto the constraints failed */
     QD_STOP_NONFINITE,       /* a state, energy, input or output not finite */
     QD_STOP_PAINLEVE,        /* friction: no or several consistent stick/slip modes */
-    QD_STOP_STEP_COLLAPSE,   /* the adaptive step shrank so far that max_steps cannot reach
+    QD_STOP_STEP_COLLAPSE,   /* the adaptive step stopped shrinking so short that max_steps cannot reach
                               * t_end at its pace (a singular point: it crawls, not underflows) */
     QD_STOP_FAILURE          /* another failure: the status and message say which */
 } qd_stop_code;

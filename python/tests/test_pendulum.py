@@ -80,7 +80,7 @@ def test_stats_are_the_runs_counts():
                             "impact_energy_lost", "in_contact", "at_rest", "chattering",
                             "contact", "transitions", "friction_dissipated",
                             "energy_balance_error", "surface_work", "initial_moved_q",
-                            "initial_moved_qd", "events_unresolved", "events_unresolved_t",
+                            "initial_moved_qd", "initial_solved", "events_unresolved", "events_unresolved_t",
                             "events_unresolved_spacing", "events_unresolved_event",
                             "energy_error_steps", "jit", "stop"}
     assert r.stop["reason"] == "reached the end time" and r.stop["t"] == 1.0

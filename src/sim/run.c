@@ -811,16 +811,19 @@ static qd_status step(qd__sim_run *r, loop *L, size_t *grid) {
  * took steps of 1e-8 s at a constant pace, the step limit of 1e8 hours
  * away.  Every COLLAPSE_WINDOW steps the pace of the window is compared with
  * the fastest window's and extrapolated to t_end: fallen more than
- * COLLAPSE_DROP times and needing more than max_steps at that pace, the
- * step has collapsed, named with its time and step.  Either test alone
- * would misname a run: a pericentre passage slows a run briefly, and a run
- * given few steps needs more than it has from the start. */
+ * COLLAPSE_DROP times, no longer falling (within 10 times the last
+ * window's) and needing more than max_steps at that pace, the step has
+ * collapsed, named with its time and step.  Each test alone would misname
+ * a run: a pericentre passage slows a run briefly, a run given few steps
+ * needs more than it has from the start, and a blow-up's steps shrink on
+ * to the underflow that names it. */
 #define COLLAPSE_WINDOW 1000
 #define COLLAPSE_DROP 1e3
 
 typedef struct pace {
     double mark;    /* t at the window's start */
     double fastest; /* the longest mean step of a window so far */
+    double last;    /* the last window's mean step */
 } pace;
 
 static qd_status collapsed(qd__sim_run *r, const qd_sim_opts *o, pace *p) {
@@ -830,8 +833,12 @@ static qd_status collapsed(qd__sim_run *r, const qd_sim_opts *o, pace *p) {
     if (!(mean > 0)) /* an impact or a switch went back: no pace */
         return QD_OK;
     p->fastest = fmax(p->fastest, mean);
-    double need = left / mean;
-    if (mean * COLLAPSE_DROP > p->fastest || need <= (double)(max_steps(o) - it->steps))
+    double need = left / mean, last = p->last;
+    p->last = mean;
+    /* still shrinking fast (a solution blowing up in finite time): the
+     * underflow test ends it, at the blow-up */
+    if (mean * COLLAPSE_DROP > p->fastest || mean < 0.1 * last ||
+        need <= (double)(max_steps(o) - it->steps))
         return QD_OK;
     qd__sim_stop(r->s, QD_STOP_STEP_COLLAPSE, it->t, it->h);
     qd_ctx_error(r->s->ctx, QD_ERR_NUMERIC,
@@ -850,7 +857,7 @@ static qd_status integrate(qd__sim_run *r, const qd_sim_opts *o, emitter *em, me
     loop L = {.o = o, .em = em, .ms = ms, .stats = stats,
               .fixed = !qd_sim_method_adaptive(o->method) || o->fixed};
     size_t grid = 1;
-    pace p = {it->t, 0};
+    pace p = {it->t, 0, 0};
     qd_status st = make_row(r, ms, it->t, it->y, r->row);
     if (st != QD_OK)
         return st;
