@@ -254,18 +254,23 @@ typedef struct qd_sim_opts {
      * its steps).  A grid with more rows than max_steps is refused. */
     double every;
     /* Machine code for the compiled programs (qd_prog_jit): QD_SIM_JIT_AUTO
-     * (0) once the run has interpreted about as much work as compiling
-     * costs (QD_SIM_JIT_WORK instruction evaluations: short runs never
-     * compile), QD_SIM_JIT_ON from the start, QD_SIM_JIT_OFF never.  The
-     * numbers are the same bit for bit; without the JIT module (a build
-     * without LLVM) the run is interpreted. */
+     * (0) once the run is predicted (its evaluations so far, over the part
+     * of [t0, t_end] they covered) to interpret more than compiling costs
+     * (QD_SIM_JIT_WORK plus QD_SIM_JIT_WORK_PER_INSTR for each instruction
+     * compiled: short runs never compile), QD_SIM_JIT_ON from the start,
+     * QD_SIM_JIT_OFF never.  The numbers are the same bit for bit; without
+     * the JIT module (a build without LLVM) the run is interpreted. */
     int jit;
 } qd_sim_opts;
 
 enum { QD_SIM_JIT_AUTO = 0, QD_SIM_JIT_ON = 1, QD_SIM_JIT_OFF = 2 };
-/* Instructions evaluated before AUTO compiles: about the 0.1 s that LLVM
- * takes to load and compile a 20-link pendulum's programs, interpreted. */
-#define QD_SIM_JIT_WORK 50000000.0
+/* AUTO's price of compiling, in interpreted instructions: loading LLVM
+ * (about the double pendulum's 250k evaluations of 75 instructions, the
+ * mass matrix's solve counted, where its run on machine code breaks even),
+ * and LLVM's code generation per instruction (the 20-link pendulum's 0.2 s
+ * for 15k instructions). */
+#define QD_SIM_JIT_WORK 20000000.0
+#define QD_SIM_JIT_WORK_PER_INSTR 8.0
 
 /* Why a run stopped, as data (issue 31): the code, the time and the
  * quantity that decided it; qd_stop_str renders the code in English, and
