@@ -264,13 +264,14 @@ typedef struct qd_sim_opts {
 } qd_sim_opts;
 
 enum { QD_SIM_JIT_AUTO = 0, QD_SIM_JIT_ON = 1, QD_SIM_JIT_OFF = 2 };
-/* AUTO's price of compiling, in interpreted instructions: loading LLVM
- * (about the double pendulum's 250k evaluations of 75 instructions, the
- * mass matrix's solve counted, where its run on machine code breaks even),
- * and LLVM's code generation per instruction (the 20-link pendulum's 0.2 s
- * for 15k instructions). */
+/* AUTO's price of compiling, in interpreted instructions of the
+ * evaluations it spares (bench/run_jit.py, processor time): loading LLVM
+ * (27 ms, the double pendulum's 2.6e5 evaluations of 75 instructions with
+ * the solve, at 0.08 us saved each), and LLVM's code generation, 12 us an
+ * instruction compiled, where a 20-link pendulum's evaluation of 7.8k
+ * instructions saves 1.7 us (0.2 ns an instruction). */
 #define QD_SIM_JIT_WORK 20000000.0
-#define QD_SIM_JIT_WORK_PER_INSTR 8.0
+#define QD_SIM_JIT_WORK_PER_INSTR 50000.0
 
 /* Why a run stopped, as data (issue 31): the code, the time and the
  * quantity that decided it; qd_stop_str renders the code in English, and
