@@ -41,10 +41,11 @@ def test_a_long_run_tiers_up_with_the_same_rows():
 
 
 def test_a_run_predicted_long_tiers_up_early():
-    # ~7e5 evaluations of ~75 instructions with the solve (5e7): under the
-    # 5e7 interpreted instructions the old rule waited for, but predicted
-    # from the rate over the first seconds of [0, 1000] past the price of
-    # compiling (QD_SIM_JIT_WORK + QD_SIM_JIT_WORK_PER_INSTR per instruction)
+    # ~7e5 evaluations of a 44-instruction program (3e7 in all, under the
+    # 5e7 done that the old rule waited for), but with the solve ~75 an
+    # evaluation, predicted from the rate over the first seconds of
+    # [0, 1000] past the price of compiling (QD_SIM_JIT_WORK +
+    # QD_SIM_JIT_WORK_PER_INSTR per instruction)
     m = qdot.Model(DOUBLE)
     if not m.simulate(0.1, jit=True).stats["jit"]:
         pytest.skip("no JIT module in this build")
