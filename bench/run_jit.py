@@ -5,7 +5,8 @@ the double pendulum (examples/double_pendulum.qd, 1000 s) and the 8- and
 20-link pendulums (written here), dop853 at rtol 1e-12 / 1e-10.
 
 Each row: the run's own time (qdot's summary line, median of REPS) and the
-whole process (bench/timing.py) for --no-jit (the interpreter), the default
+whole process (bench/timing.py: wall, and processor time, the steadier
+figure on a loaded machine) for --no-jit (the interpreter), the default
 (AUTO: machine code once the run is long), --jit (from the start) and
 --native (its object cached by a first run that is not counted), with the
 ratios default/native and interpreter/jit.  The rows of every variant are
@@ -71,7 +72,7 @@ def main():
     for name, path, t_end, rtol in cases:
         base = [qdot, "simulate", path, "--t-end", t_end, "--method", "dop853", "--rtol", rtol]
         first = timed(base + ["--native"], 1, quiet=True)[0]  # compiles and caches the object
-        runs, wall = {}, {}
+        runs, wall, cpu = {}, {}, {}
         ref = in_run(base + ["--no-jit"])[1]
         for label, extra in (("interp", ["--no-jit"]), ("default", []), ("jit", ["--jit"]),
                              ("native", ["--native"])):
@@ -82,13 +83,16 @@ def main():
                 if label != "native" and rows != ref:
                     sys.exit("%s %s: the rows differ from the interpreter's" % (name, label))
             runs[label] = statistics.median(ts)
-            wall[label] = timed(base + extra, REPS, quiet=True)[0]
+            wall[label], cpu[label] = timed(base + extra, REPS, quiet=True)
         print("%-16s %9.3f %9.3f %9.3f %9.3f %8.2f %8.2f %10.2f   (in the run, s)"
               % (name, runs["interp"], runs["default"], runs["jit"], runs["native"],
                  runs["default"] / runs["native"], runs["interp"] / runs["jit"], first))
         print("%-16s %9.3f %9.3f %9.3f %9.3f %8.2f %8.2f %10s   (whole process, s)"
               % ("", wall["interp"], wall["default"], wall["jit"], wall["native"],
                  wall["default"] / wall["native"], wall["interp"] / wall["jit"], ""))
+        print("%-16s %9.3f %9.3f %9.3f %9.3f %8.2f %8.2f %10s   (whole process, processor s)"
+              % ("", cpu["interp"], cpu["default"], cpu["jit"], cpu["native"],
+                 cpu["default"] / cpu["native"], cpu["interp"] / cpu["jit"], ""))
 
 
 if __name__ == "__main__":

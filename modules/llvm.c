@@ -10,8 +10,13 @@
  * fadd/fsub/fmul/fdiv/fneg without fast-math flags, sums and products in
  * the interpreter's order, sqrt and fabs as intrinsics (both exact), the
  * other functions calls to the same libm the interpreter calls, by
- * address: the result is the interpreter's bit for bit.
+ * address: the result is the interpreter's bit for bit.  A sin and a cos
+ * of the same value are one call of glibc's sincos, which computes each
+ * by the same code as sin and cos (s_sincos.c shares do_sin, do_cos and
+ * the reduction of s_sin.c): the same bits for about half the cost, as
+ * gcc does for --native's C (test_prog_jit checks it at every point).
  */
+#define _GNU_SOURCE /* sincos */
 #include <llvm-c/Core.h>
 #include <llvm-c/Error.h>
 #include <llvm-c/LLJIT.h>
@@ -49,6 +54,11 @@ typedef struct build {
     LLVMTypeRef d, fn1, fn2, ptr1, ptr2; /* double; double(double), double(double, double) */
     LLVMValueRef *v;                     /* the current value of each register */
     LLVMValueRef sqrt, fabs;             /* intrinsics */
+    /* sin and cos of one value (pair_up): for instruction k its partner's
+     * index or SIZE_MAX, the partner's result once computed, the slots
+     * sincos writes */
+    size_t *partner;
+    LLVMValueRef *twin, slot_sin, slot_cos;
 } build;
 
 static LLVMValueRef address(build *s, LLVMTypeRef ptr, void (*f)(void)) {
@@ -108,8 +118,75 @@ static LLVMValueRef prodn(build *s, const uint32_t *a) {
     return LLVMBuildFDiv(s->b, m, q, "");
 }
 
-static LLVMValueRef instruction(build *s, const qd_prog *p, const instr *i,
+/* Partners: a SIN and a COS reading the same register with no write to
+ * it between them (the same value: registers are reused).  False when out
+ * of memory (then no pairs, the code as correct). */
+static bool pair_up(build *s, const qd_prog *p) {
+    size_t nc = p->ncode ? p->ncode : 1, nr = p->nreg ? p->nreg : 1;
+    s->partner = malloc(nc * sizeof *s->partner);
+    s->twin = calloc(nc, sizeof *s->twin);
+    size_t *open_sin = malloc(nr * sizeof *open_sin), *open_cos = malloc(nr * sizeof *open_cos);
+    bool ok = s->partner && s->twin && open_sin && open_cos;
+    for (size_t k = 0; ok && k < nr; k++)
+        open_sin[k] = open_cos[k] = SIZE_MAX;
+    for (size_t k = 0; ok && k < p->ncode; k++) {
+        const instr *i = &p->code[k];
+        s->partner[k] = SIZE_MAX;
+        if (i->op == OP_SIN || i->op == OP_COS) {
+            size_t r = i->arg[0], *mine = i->op == OP_SIN ? open_sin : open_cos,
+                   *other = i->op == OP_SIN ? open_cos : open_sin;
+            if (other[r] != SIZE_MAX) {
+                s->partner[k] = other[r];
+                s->partner[other[r]] = k;
+                other[r] = SIZE_MAX;
+            } else if (mine[r] == SIZE_MAX) {
+                mine[r] = k;
+            }
+        }
+        open_sin[i->dst] = open_cos[i->dst] = SIZE_MAX;
+    }
+    free(open_sin);
+    free(open_cos);
+    if (!ok) {
+        free(s->partner);
+        free(s->twin);
+        s->partner = NULL;
+        s->twin = NULL;
+    }
+    return ok;
+}
+
+#ifdef __GLIBC__
+typedef void (*fsc)(double, double *, double *);
+
+/* sin(x) for instruction k (SIN, else COS) and its partner's result kept. */
+static LLVMValueRef sincos_of(build *s, size_t k, bool want_sin, LLVMValueRef x) {
+    LLVMTypeRef dp = LLVMPointerType(s->d, 0), args[3] = {s->d, dp, dp};
+    LLVMTypeRef ft = LLVMFunctionType(LLVMVoidTypeInContext(s->c), args, 3, 0);
+    LLVMValueRef a[3] = {x, s->slot_sin, s->slot_cos};
+    LLVMBuildCall2(s->b, ft, address(s, LLVMPointerType(ft, 0), (void (*)(void))(fsc)sincos), a,
+                   3, "");
+    LLVMValueRef sv = LLVMBuildLoad2(s->b, s->d, s->slot_sin, "");
+    LLVMValueRef cv = LLVMBuildLoad2(s->b, s->d, s->slot_cos, "");
+    s->twin[s->partner[k]] = want_sin ? cv : sv;
+    return want_sin ? sv : cv;
+}
+#endif
+
+/* SIN or COS of instruction k: its partner's sincos result when paired. */
+static LLVMValueRef sin_cos(build *s, size_t k, bool want_sin, LLVMValueRef x) {
+#ifdef __GLIBC__
+    if (s->partner && s->partner[k] != SIZE_MAX)
+        return s->partner[k] > k ? sincos_of(s, k, want_sin, x) : s->twin[k];
+#else
+    (void)k;
+#endif
+    return call1(s, want_sin ? ADDR1(s, sin) : ADDR1(s, cos), x);
+}
+
+static LLVMValueRef instruction(build *s, const qd_prog *p, size_t k,
                                 const qd__jit_env *env) {
+    const instr *i = &p->code[k];
     LLVMBuilderRef b = s->b;
     /* ADD3, MUL3, SUMN and PRODN find their registers in the operand
      * list at arg[0]; the others read the registers arg[0] and arg[1] */
@@ -132,8 +209,8 @@ static LLVMValueRef instruction(build *s, const qd_prog *p, const instr *i,
         return LLVMBuildFMul(b, LLVMBuildFMul(b, s->v[a[0]], s->v[a[1]], ""), s->v[a[2]], "");
     case OP_SUMN: return sumn(s, a);
     case OP_PRODN: return prodn(s, a);
-    case OP_SIN: return call1(s, ADDR1(s, sin), x);
-    case OP_COS: return call1(s, ADDR1(s, cos), x);
+    case OP_SIN: return sin_cos(s, k, true, x);
+    case OP_COS: return sin_cos(s, k, false, x);
     case OP_TAN: return call1(s, ADDR1(s, tan), x);
     case OP_ASIN: return call1(s, ADDR1(s, asin), x);
     case OP_ACOS: return call1(s, ADDR1(s, acos), x);
@@ -167,8 +244,15 @@ static void body(build *s, const qd_prog *p, const qd__jit_env *env, LLVMValueRe
     }
     for (size_t k = 0; k < p->nconst; k++)
         s->v[p->nin + k] = LLVMConstReal(s->d, p->consts[k]);
+    s->slot_sin = LLVMBuildAlloca(s->b, s->d, "");
+    s->slot_cos = LLVMBuildAlloca(s->b, s->d, "");
+    pair_up(s, p);
     for (size_t k = 0; k < p->ncode; k++)
-        s->v[p->code[k].dst] = instruction(s, p, &p->code[k], env);
+        s->v[p->code[k].dst] = instruction(s, p, k, env);
+    free(s->partner);
+    free(s->twin);
+    s->partner = NULL;
+    s->twin = NULL;
     for (size_t k = 0; k < p->nout; k++)
         store(s, out, k, s->v[p->out[k]]);
 }

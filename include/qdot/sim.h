@@ -263,11 +263,12 @@ typedef struct qd_sim_opts {
      * its steps).  A grid with more rows than max_steps is refused. */
     double every;
     /* Machine code for the compiled programs (qd_prog_jit): QD_SIM_JIT_AUTO
-     * (0) once the run has interpreted about as much work as compiling
-     * costs (QD_SIM_JIT_WORK instruction evaluations: short runs never
-     * compile), QD_SIM_JIT_ON from the start, QD_SIM_JIT_OFF never.  The
-     * numbers are the same bit for bit; without the JIT module (a build
-     * without LLVM) the run is interpreted. */
+     * (0) once the run is predicted (its evaluations so far, over the part
+     * of [t0, t_end] they covered) to interpret more than compiling costs
+     * (QD_SIM_JIT_WORK plus QD_SIM_JIT_WORK_PER_INSTR for each instruction
+     * compiled: short runs never compile), QD_SIM_JIT_ON from the start,
+     * QD_SIM_JIT_OFF never.  The numbers are the same bit for bit; without
+     * the JIT module (a build without LLVM) the run is interpreted. */
     int jit;
     /* Called after every step with its time (may be NULL): a progress bar,
      * ^C.  A nonzero return stops the run there as the row callback's does
@@ -279,9 +280,14 @@ typedef struct qd_sim_opts {
 } qd_sim_opts;
 
 enum { QD_SIM_JIT_AUTO = 0, QD_SIM_JIT_ON = 1, QD_SIM_JIT_OFF = 2 };
-/* Instructions evaluated before AUTO compiles: about the 0.1 s that LLVM
- * takes to load and compile a 20-link pendulum's programs, interpreted. */
-#define QD_SIM_JIT_WORK 50000000.0
+/* AUTO's price of compiling, in interpreted instructions of the
+ * evaluations it spares (bench/run_jit.py, processor time): loading LLVM
+ * (27 ms, the double pendulum's 2.6e5 evaluations of 75 instructions with
+ * the solve, at 0.08 us saved each), and LLVM's code generation, 12 us an
+ * instruction compiled, where a 20-link pendulum's evaluation of 7.8k
+ * instructions saves 1.7 us (0.2 ns an instruction). */
+#define QD_SIM_JIT_WORK 20000000.0
+#define QD_SIM_JIT_WORK_PER_INSTR 50000.0
 
 /* Why a run stopped, as data (issue 31): the code, the time and the
  * quantity that decided it; qd_stop_str renders the code in English, and

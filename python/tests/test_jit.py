@@ -40,6 +40,21 @@ def test_a_long_run_tiers_up_with_the_same_rows():
     assert not m.simulate(1, rtol=1e-11).stats["jit"]  # a short run never compiles
 
 
+def test_a_run_predicted_long_tiers_up_early():
+    # ~7e5 evaluations of a 44-instruction program (3e7 in all, under the
+    # 5e7 done that the old rule waited for), but with the solve ~75 an
+    # evaluation, predicted from the rate over the first seconds of
+    # [0, 1000] past the price of compiling (QD_SIM_JIT_WORK +
+    # QD_SIM_JIT_WORK_PER_INSTR per instruction)
+    m = qdot.Model(DOUBLE)
+    if not m.simulate(0.1, jit=True).stats["jit"]:
+        pytest.skip("no JIT module in this build")
+    auto = m.simulate(1000, rtol=1e-11, dt=1.0)
+    off = m.simulate(1000, rtol=1e-11, dt=1.0, jit=False)
+    assert auto.stats["jit"] and np.array_equal(auto.data, off.data)
+    assert not m.simulate(100, rtol=1e-11, dt=1.0).stats["jit"]  # predicted short
+
+
 def test_jit_argument_checked():
     with pytest.raises(TypeError, match="jit"):
         qdot.Model(DOUBLE).simulate(1, jit="yes")

@@ -9,6 +9,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include "../base/args.h"
 #include "sym/sym_export.h"
 
@@ -50,8 +51,8 @@ static double predicted_evals(const qd_sim *s, double t) {
 }
 
 /* Every program as machine code, acc (when fused) only with its solve:
- * lag_rhs calls nothing else of it, and compiling it twice doubled a
- * 20-link pendulum's compile time. */
+ * lag_rhs calls nothing else of it, and compiling it twice cost a 20-link
+ * pendulum 10% more instructions (callgrind). */
 static qd_status jit_all(qd_ctx *ctx, qd_sim *s) {
     qd_prog *progs[12];
     size_t n = programs(s, progs);
@@ -65,8 +66,19 @@ static qd_status jit_all(qd_ctx *ctx, qd_sim *s) {
     return st;
 }
 
+/* What compiling costs, in interpreted instructions: loading LLVM, and
+ * its code generation for every instruction of every program. */
+static double compile_work(const qd_sim *s) {
+    qd_prog *progs[12];
+    size_t n = programs(s, progs);
+    double instrs = 0;
+    for (size_t k = 0; k < n; k++)
+        instrs += (double)qd_prog_ninstr(progs[k]);
+    return QD_SIM_JIT_WORK + QD_SIM_JIT_WORK_PER_INSTR * instrs;
+}
+
 void qd__sim_jit_tier(qd_sim *s, bool now, double t) {
-    if (s->jit_tried || (!now && predicted_evals(s, t) * rhs_work(s) < QD_SIM_JIT_WORK))
+    if (s->jit_tried || (!now && predicted_evals(s, t) * rhs_work(s) < compile_work(s)))
         return;
     s->jit_tried = true;
     /* the JIT's failures (no module) are not the run's: a context of its own */
