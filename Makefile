@@ -84,6 +84,7 @@ bench:
 	/usr/bin/python3 bench/run_sweep.py build-bench
 	/usr/bin/python3 bench/run_sweep_mpi.py build-bench
 	/usr/bin/python3 bench/run_parse.py build-bench
+	/usr/bin/python3 bench/run_startup.py build-bench
 	/usr/bin/python3 bench/run_python.py build-bench
 
 install: build

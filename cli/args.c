@@ -39,6 +39,35 @@ static const cli_opt *lookup(const cli_spec *spec, const char *arg, size_t len, 
     return NULL;
 }
 
+/* -o/--out FILE of a command that prints to standard output and has no
+ * --out of its own: standard output goes to FILE (cli_stdout_to). */
+static const cli_opt stdout_opt = {"--out", "-o", CLI_TEXT, 0, "FILE",
+                                   "write the output to FILE (default: standard output)", NULL,
+                                   NULL};
+
+/* Options renamed so that one word means one thing in every command
+ * (issue 31): the old spelling still works where the command has the new
+ * one, with a warning. */
+static const struct {
+    const char *old, *now, *why;
+} renamed[] = {
+    {"--near", "--guess", "the starting point of a search, as in stability and path"},
+};
+
+static const cli_opt *lookup_or_out(const cli_spec *spec, const char *arg, size_t len,
+                                    size_t *base) {
+    const cli_opt *o = lookup(spec, arg, len, base);
+    for (size_t k = 0; !o && k < sizeof renamed / sizeof renamed[0]; k++)
+        if (same(renamed[k].old, arg, len) &&
+            (o = lookup(spec, renamed[k].now, strlen(renamed[k].now), base)) != NULL)
+            fprintf(stderr, "qdot: warning: %s is now %s (%s)\n", renamed[k].old,
+                    renamed[k].now, renamed[k].why);
+    if (!o && (same(stdout_opt.name, arg, len) || same(stdout_opt.alias, arg, len)) &&
+        !lookup(spec, stdout_opt.name, strlen(stdout_opt.name), base))
+        o = &stdout_opt;
+    return o;
+}
+
 /* Every option name of the spec, for "did you mean" (at most max). */
 static size_t option_names(const cli_spec *spec, const char **names, size_t max) {
     size_t n = 0;
@@ -153,7 +182,7 @@ static bool looks_like_option(const cli_spec *spec, const char *arg) {
     if (!spec->expressions)
         return true;
     size_t base;
-    return cli_is_option(arg) || lookup(spec, arg, option_name_len(arg), &base);
+    return cli_is_option(arg) || lookup_or_out(spec, arg, option_name_len(arg), &base);
 }
 
 /* One positional more than the command takes. */
@@ -166,6 +195,7 @@ static int too_many(const cli_spec *spec, const char *arg) {
 
 int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const char **pos) {
     unsigned npos = 0;
+    const char *stdout_path = NULL;
     const char *seen_name[256];
     const char *seen_arg[256];
     size_t nseen = 0;
@@ -192,7 +222,7 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
             continue;
         }
         size_t len = option_name_len(arg), base = 0;
-        const cli_opt *o = lookup(spec, arg, len, &base);
+        const cli_opt *o = lookup_or_out(spec, arg, len, &base);
         if (!o)
             return unknown_option(spec, arg, len);
         if (o->kind != CLI_LIST) {
@@ -223,6 +253,10 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
                 return cli_usage_error("%s needs a value: %s %s", o->name, o->name, o->metavar);
             v = argv[++i];
         }
+        if (o == &stdout_opt) {
+            stdout_path = v;
+            continue;
+        }
         int rc = store(spec, o, base, v, args);
         if (rc != QD_EXIT_OK)
             return rc;
@@ -231,7 +265,8 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
         return cli_usage_error("%s is missing (usage: qdot %s %s)",
                                spec->pos_name ? spec->pos_name : "an argument", spec->name,
                                spec->synopsis ? spec->synopsis : "");
-    return QD_EXIT_OK;
+    /* last, so that a usage error above leaves no file behind */
+    return stdout_path ? cli_stdout_to(stdout_path) : QD_EXIT_OK;
 }
 
 static void usage_line(FILE *out, const cli_opt *o) {
@@ -263,6 +298,8 @@ void cli_usage(const cli_spec *spec, FILE *out) {
         for (const cli_opt *o = g->opts; o->name; o++)
             if (lookup(spec, o->name, strlen(o->name), &base) == o) /* not the command's own */
                 usage_line(out, o);
+    if (!lookup(spec, stdout_opt.name, strlen(stdout_opt.name), &base))
+        usage_line(out, &stdout_opt);
     fprintf(out, "  %-26s %s\n", "-h, --help", "this help");
 }
 

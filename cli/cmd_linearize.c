@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "lqr_cli.h"
-#include "qdot/conlin.h"
+#include "plot_cli.h"
 #include "qdot/statespace.h"
 
 enum { F_TEXT, F_JSON, F_C, F_SYMPY, F_OCTAVE };
@@ -21,6 +21,7 @@ typedef struct lin_args {
     const char *about, *lqr, *independent, *format_name, *scan;
     cli_list sets;
     int format;
+    cli_plot_args look; /* --plot with --scan: the eigenvalues against the parameter */
 } lin_args;
 
 static const cli_opt opts[] = {
@@ -36,14 +37,19 @@ static const cli_opt opts[] = {
      "eigenvalues at 101 values of a parameter, and where stability changes", NULL, NULL},
     {"--format", NULL, CLI_CHOICE, offsetof(lin_args, format_name), "F", "output format",
      formats, NULL},
+    {"--plot", NULL, CLI_TEXT, offsetof(lin_args, look.file), "FILE.png|.svg|.pdf",
+     "with --scan: the eigenvalues against the parameter, each change of stability marked",
+     NULL, NULL},
     {NULL, NULL, CLI_FLAG, 0, NULL, NULL, NULL, NULL},
 };
+
+static const cli_group groups[] = {CLI_PLOT_LOOK_GROUP(lin_args, look), {NULL, 0}};
 
 static const cli_spec spec = {
     "linearize", "FILE [options]",
     "The state-space form x' = A x + B u, y = C x + D u about an operating point, the "
     "eigenvalues of A, controllability and observability.",
-    opts, NULL, 1, 1, "FILE", false};
+    opts, groups, 1, 1, "FILE", false};
 
 /* The state-space form, then the design when there is one (text and C
  * print it after the matrices, JSON nests it under "lqr"): the library's
@@ -57,41 +63,7 @@ static int emit(qd_ctx *ctx, const lin_args *a, const qd_statespace *s,
                            "state-space form");
 }
 
-/* Velocity constraints, --lqr, --scan, code: the manifold's states (qdot/conlin.h). */
-static int manifold(qd_ctx *ctx, const lin_args *a, cli_lin_run *r, int fmt) {
-    qd_conlin c = {0};
-    qd_conlin_scan sc = {0};
-    qd_care_result lqr = {0};
-    qd_buf b = QD_BUF_INIT;
-    char name[128];
-    double lo = 0, hi = 0;
-    int rc = a->scan ? cli_scan_range(ctx, a->scan, name, sizeof name, &lo, &hi) : QD_EXIT_OK;
-    if (rc == QD_EXIT_OK && qd_conlin_point(ctx, r->c.mf.model, &r->pt, a->about) != QD_OK)
-        rc = cli_state_diag(ctx, "--about", a->about);
-    else if (rc == QD_EXIT_OK && a->scan &&
-             qd_conlin_scan_run(ctx, r->e, r->c.mf.model, &r->pt, a->about, a->independent, name,
-                                lo, hi, 100, &sc) != QD_OK)
-        rc = cli_state_diag(ctx, "--independent", a->independent);
-    else if (rc == QD_EXIT_OK && a->scan)
-        rc = cli_emit_status(ctx, qd_conlin_scan_print(&sc, name, fmt == QD_SS_JSON, &b), &b,
-                             "scan");
-    else if (rc == QD_EXIT_OK &&
-             qd_conlin_about(ctx, r->e, r->c.mf.model, &r->pt, a->independent, &c) != QD_OK)
-        rc = cli_state_diag(ctx, "--independent", a->independent);
-    else if (rc == QD_EXIT_OK && a->lqr) /* on the core: the ignorable states' s = 0 */
-        rc = qd_conlin_keep_core(ctx, &c) ? cli_diag_ctx(ctx)
-                                          : cli_lqr_design(ctx, &c.ss, a->lqr, &lqr);
-    if (rc == QD_EXIT_OK && !a->scan)
-        rc = cli_emit_status(ctx, qd_conlin_render(ctx, &c, a->lqr ? &lqr : NULL, fmt, &b), &b,
-                             "state-space form");
-    qd_care_result_free(&lqr);
-    qd_conlin_scan_free(&sc);
-    qd_conlin_free(&c);
-    return rc;
-}
-
-/* A model that keeps constraints: A over the independent states on the
- * manifold (constrained_cli.c, or manifold above). */
+/* A model that keeps constraints: on its state manifold (cli_conlin). */
 static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eom *e) {
     static const qd_ss_format fmt[] = {QD_SS_TEXT, QD_SS_JSON, QD_SS_C, QD_SS_SYMPY,
                                        QD_SS_OCTAVE};
@@ -99,18 +71,11 @@ static int constrained(qd_ctx *ctx, const lin_args *a, cli_model_file *mf, qd_eo
         return cli_usage_error("%s: the model keeps no constraints",
                                a->scan ? "--scan" : "--independent");
     cli_lin_run r = {.c = {.ctx = ctx, .mf = *mf}, .e = e};
+    const cli_conlin_args ca = {a->about, a->independent, a->scan, a->lqr, fmt[a->format], 0,
+                                false, NULL, NULL, &a->look};
     int rc = cli_lin_setup(&r);
-    bool conlin = qd_conlin_needed(e) || a->lqr || a->scan || a->format > F_JSON;
-    double *q0 = rc == QD_EXIT_OK && !conlin ? calloc(e->n + 1, sizeof *q0) : NULL;
-    if (rc == QD_EXIT_OK && conlin)
-        rc = manifold(ctx, a, &r, fmt[a->format]);
-    else if (rc == QD_EXIT_OK && !q0)
-        rc = cli_out_of_memory();
-    if (rc == QD_EXIT_OK && !conlin)
-        rc = cli_con_point(&r, a->about, a->format == F_JSON, q0);
-    if (rc == QD_EXIT_OK && !conlin)
-        rc = cli_con_linearize(&r, q0, a->independent, a->format == F_JSON);
-    free(q0);
+    if (rc == QD_EXIT_OK)
+        rc = cli_conlin(&r, &ca);
     qd_linpoint_free(&r.pt);
     return rc;
 }
@@ -131,7 +96,9 @@ static int check(cli_run *c) {
             a->format = k;
     if (a->lqr && a->format != F_TEXT && a->format != F_JSON && a->format != F_C)
         return cli_usage_error("--lqr prints as text, json or c, not %s", formats[a->format]);
-    return QD_EXIT_OK;
+    if (a->look.file && !a->scan)
+        return cli_usage_error("--plot draws the eigenvalues of --scan NAME=A:B: give --scan");
+    return cli_plot_check(&a->look, "linearize");
 }
 
 static int run(cli_run *c) {

@@ -5,15 +5,19 @@
  * kinds, Lagrange's equations in geodesic form, a force's components
  * (covariant, contravariant, physical, ordinary), and the chart's
  * Jacobian with its singular points (qdot/metric.h; Desloge App. 23,
- * ch. 47, ch. 55).
+ * ch. 47, ch. 55); --gram-schmidt: the coordinate tangents orthogonalized
+ * under the metric instead (qd_gram_schmidt, App. 21 Thm 2).
  */
 #include "driver.h"
 
 #include <stdlib.h>
+#include "qdot/form.h"
 #include "qdot/metric.h"
+#include "qdot/render.h"
 
 typedef struct mt_args {
     const char *force, *format;
+    bool gram;
     cli_list set;
 } mt_args;
 
@@ -26,6 +30,9 @@ static const cli_opt opts[] = {
     {"--force", NULL, CLI_TEXT, offsetof(mt_args, force), "\"G1, G2, ...\"",
      "a force by its covariant components G_i = F . dx/dq_i (default: the model's Q)", NULL,
      NULL},
+    {"--gram-schmidt", NULL, CLI_FLAG, offsetof(mt_args, gram), NULL,
+     "the coordinate tangents orthogonalized under the metric: b(i)^T g b(j) = 0 (App. 21)",
+     NULL, NULL},
     CLI_OPT_FORMAT(mt_args, format),
     CLI_OPT_SET(mt_args, set),
     {0},
@@ -37,6 +44,21 @@ static const cli_spec spec = {
     "and the chart.",
     opts, NULL, 1, 1, "FILE", false,
 };
+
+/* The tangents e_1..e_n (the unit columns) orthogonalized under g_ij. */
+static qd_status tangents(qd_ctx *ctx, const qd_metric *g, qd_render_format fmt, qd_buf *b) {
+    size_t n = g->n;
+    const qd_expr **I = calloc(n * n + 1, sizeof *I);
+    if (!I)
+        return QD_ERR_NOMEM;
+    for (size_t i = 0; i < n * n; i++)
+        I[i] = qd_int(ctx, i / n == i % n);
+    qd_gram *gs = qd_gram_schmidt(ctx, n, g->g, n, I);
+    qd_status st = gs ? qd_render_gram(ctx, gs, g->q, g->g, fmt, b) : qd_ctx_status(ctx);
+    qd_gram_free(gs);
+    free(I);
+    return st;
+}
 
 static int run(cli_run *c) {
     const mt_args *a = &((mt_run *)c)->a;
@@ -59,7 +81,10 @@ static int run(cli_run *c) {
     }
     qd_buf b = QD_BUF_INIT;
     const qd_expr *const *force = a->force ? G : NULL;
-    if (rc == QD_EXIT_OK)
+    if (rc == QD_EXIT_OK && a->gram)
+        rc = cli_emit_status(ctx, tangents(ctx, g, cli_render_format(a->format), &b), &b,
+                             "orthogonalization");
+    else if (rc == QD_EXIT_OK)
         rc = cli_emit_status(ctx, cli_json(a->format)
                                       ? qd_metric_json(ctx, g, force, &b)
                                       : qd_metric_print(ctx, g, force, QD_FMT_TEXT, &b),

@@ -27,6 +27,7 @@
 #include "modes_plot.h"
 #include "modes_symmetry.h"
 #include "plot_cli.h"
+#include "qdot/conlin.h"
 
 typedef struct modes_args {
     const char *about, *initial, *scan, *format;
@@ -208,14 +209,20 @@ static int run(cli_run *c) {
                                 a->at_eq ? "--at-equilibrium" : a->initial ? "--initial" : NULL);
     if (rc == QD_EXIT_OK)
         rc = cli_lin_derive(&r->lr);
-    if (rc == QD_EXIT_OK && (r->lr.e->ncon ? a->scan || a->symmetry || a->plot || a->initial
+    if (rc == QD_EXIT_OK && (r->lr.e->ncon ? a->symmetry || a->plot || a->initial ||
+                                                 (a->at_eq && qd_conlin_needed(r->lr.e))
                                            : a->independent != NULL))
         rc = cli_usage_error(r->lr.e->ncon ? "%s: not yet on the constraint manifold of a model "
                                              "that keeps constraints with multipliers"
                                            : "%s: the model keeps no constraints",
-                             r->lr.e->ncon ? (a->scan ? "--scan" : a->symmetry ? "--symmetry"
-                                                      : a->plot ? "--plot" : "--initial")
+                             r->lr.e->ncon ? (a->symmetry ? "--symmetry" : a->plot ? "--plot"
+                                              : a->initial ? "--initial" : "--at-equilibrium")
                                            : "--independent");
+    /* velocity constraints (steady motions: the rolling disc), --scan: the state manifold */
+    const cli_conlin_args ca = {a->about, a->independent, a->scan, NULL,
+                                a->json ? QD_SS_JSON : QD_SS_TEXT, a->steps, true, NULL, NULL, NULL};
+    if (rc == QD_EXIT_OK && r->lr.e->ncon && (qd_conlin_needed(r->lr.e) || a->scan))
+        return cli_conlin(&r->lr, &ca);
     if (rc == QD_EXIT_OK && a->scan)
         return cli_scan_modes(&r->lr, a->scan, a->about, a->steps, a->json);
     if (rc == QD_EXIT_OK)

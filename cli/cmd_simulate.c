@@ -82,6 +82,14 @@ static int tap(void *data, int event, const double *row) {
     return cli_interrupted(); /* ^C: stop after a whole row */
 }
 
+/* After every step (qd_sim_opts.progress): the bar and ^C between rows, which
+ * an output grid or a crawling step may space far apart. */
+static int step_progress(void *data, double t) {
+    sim_out *o = data;
+    cli_progress_update(&o->bar, (t - o->t0) / (o->t_end - o->t0), t);
+    return cli_interrupted();
+}
+
 /* ---- --variational ------------------------------------------------------------- */
 
 /* A library printer's status: its text on stderr, or out of memory. */
@@ -217,6 +225,8 @@ static int run(cli_sim *c, const cli_sim_args *a, const sim_cmd_args *sa) {
         w.json = &j;
     }
     cli_progress_start(&o.bar, "simulate");
+    c->opts.progress = step_progress;
+    c->opts.progress_data = &o;
     qd_sim_stats st;
     cli_interrupt_begin();
     qd_status s = qd_sim_run(c->s, &c->opts, qd_sim_writer_sink, &w, &st, final);

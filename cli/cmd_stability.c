@@ -24,6 +24,8 @@
 
 #include <string.h>
 #include "linear_cli.h"
+#include "eom_out.h"
+#include "qdot/conlin.h"
 #include "qdot/stability.h"
 
 typedef struct stab_args {
@@ -141,11 +143,39 @@ static int emit(stab_run *r, bool json) {
     return cli_emit(&b, "result");
 }
 
+/* A model that keeps constraints (the rolling disc, the bicycle): the steady
+ * motion is its initial state with --at (rates too), linearized on its state
+ * manifold as `linearize` does (cli_conlin), --ignore's coordinates ignorable. */
+static int on_manifold(stab_run *r, const stab_args *a) {
+    if (a->driven.n || a->momentum || a->omega || a->guess)
+        return cli_usage_error("%s: a model that keeps constraints takes its steady motion from "
+                               "its initial state and --at \"q=V, q'=V\", with --ignore naming "
+                               "the cyclic coordinates", a->driven.n ? "--driven" : a->momentum
+                               ? "--momentum" : a->omega ? "--omega" : "--guess");
+    qd_eom_opts eo = {.eliminate = true};
+    qd_eom_free(r->e);
+    if (!(r->e = qd_eom_derive_opts(r->c.ctx, r->c.mf.model, &eo)))
+        return cli_eom_derive_error(r->c.ctx, &r->c.mf);
+    cli_lin_run lr = {.c = {.ctx = r->c.ctx, .mf = r->c.mf}, .e = r->e};
+    const cli_conlin_args ca = {a->at, NULL, a->scan, NULL, a->json ? QD_SS_JSON : QD_SS_TEXT,
+                                a->steps, true, a->scan ? NULL : a->ignore, "--at", NULL};
+    int rc = r->e->ncon ? cli_lin_setup(&lr) : cli_usage_error("steady motions on constraints "
+                                                               "that can be eliminated: write "
+                                                               "the model in independent "
+                                                               "coordinates");
+    if (rc == QD_EXIT_OK)
+        rc = cli_conlin(&lr, &ca);
+    qd_linpoint_free(&lr.pt);
+    return rc;
+}
+
 static int run(cli_run *c) {
     stab_run *r = (stab_run *)c;
     int rc = cli_load_derive(c->ctx, c->file, r->a.sets.n, r->a.sets.items, "stability", NULL, &c->mf,
                              &r->e);
     const stab_args *a = &r->a;
+    if (rc == QD_EXIT_OK && r->e->ncon)
+        return on_manifold(r, a);
     qd_stability_spec ss = {a->ignore, (const char *const *)a->driven.items, a->driven.n,
                             a->momentum, a->omega, a->at, a->guess};
     if (rc == QD_EXIT_OK && qd_stability_problem_read(c->ctx, c->mf.model, r->e, &ss, &r->p) !=

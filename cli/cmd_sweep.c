@@ -148,8 +148,10 @@ static int run_all(cli_sim *c, qd_sweep *w, const sweep_args *a, size_t fmt,
     int rc = st == QD_OK ? QD_EXIT_OK : cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && r.where.writer)
         rc = write_result(c->ctx, w, a, fmt, sp, &r);
+    /* titled by the model's name, as every other plot (cli_plot_opts) */
+    const char *title = cli_plot_opts(&(cli_plot_args){0}, a->sim.file).title;
     if (rc == QD_EXIT_OK && r.where.writer && a->map &&
-        qd_sweep_map_file(w, r.rows, mapcol, a->sim.file, a->map) != QD_OK)
+        qd_sweep_map_file(w, r.rows, mapcol, title, a->map) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK && r.where.writer)
         summary(&r, wall);

@@ -46,13 +46,13 @@ int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q,
 }
 
 /* The library's search from the options (qd_equilibria_find_text). */
-int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out) {
+int cli_lin_equilibria(cli_lin_run *r, const char *guess, const char *box, qd_equilibria *out) {
     const char *where = NULL;
     qd_ctx *ctx = r->c.ctx;
-    if (qd_equilibria_find_text(ctx, &r->pt, near, box, out, &where) == QD_OK)
+    if (qd_equilibria_find_text(ctx, &r->pt, guess, box, out, &where) == QD_OK)
         return QD_EXIT_OK;
     if (where)
-        return cli_state_diag(ctx, where == near ? "--near" : "--box", where);
+        return cli_state_diag(ctx, where == guess ? "--guess" : "--box", where);
     cli_diag_error("%s", qd_ctx_message(ctx));
     /* a constraint the manifold search does not take (with t, with velocities) */
     return qd_ctx_status(ctx) == QD_ERR_UNSUPPORTED ? QD_EXIT_USAGE : QD_EXIT_FAIL;

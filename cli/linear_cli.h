@@ -1,7 +1,7 @@
 /*
  * cli/linear_cli.h - what `qdot equilibria` and `qdot modes` share: a model
  * loaded with its --set values, its equations derived (holonomic
- * constraints eliminated), the state of the parameters, and the --near /
+ * constraints eliminated), the state of the parameters, and the --guess /
  * --box / --about lists read against the coordinates.
  */
 #ifndef QDOT_CLI_LINEAR_CLI_H
@@ -36,8 +36,8 @@ void cli_lin_free(cli_lin_run *r);
 /* qd_linpoint_read (qd NULL: qd_linpoint_read_coords) of the option what's
  * text ("--initial"), its error shown under that text. */
 int cli_lin_point(cli_lin_run *r, const char *what, const char *text, double *q, double *qd);
-/* Equilibria with the options (near, box may be NULL). */
-int cli_lin_equilibria(cli_lin_run *r, const char *near, const char *box, qd_equilibria *out);
+/* Equilibria with the options (guess, box may be NULL). */
+int cli_lin_equilibria(cli_lin_run *r, const char *guess, const char *box, qd_equilibria *out);
 
 
 /* ---- models with speeds (speeds_lin_cli.c) ---------------------------------
@@ -52,18 +52,35 @@ int cli_speeds_modes(qd_ctx *ctx, cli_model_file *mf, const char *about, const c
                      size_t steps, bool json, const char *refuse);
 
 /* ---- models that keep constraints (constrained_cli.c) -----------------------
- * Modes and the state-space matrix on the constraint manifold about q0 (e->n
- * values, moved onto the constraints by the dependent coordinates).  indep:
- * "x, ..." the independent coordinates, or NULL (chosen by the library). */
+ * Modes on the constraint manifold of holonomic constraints about q0 (e->n
+ * values, moved onto the constraints by the dependent coordinates), from
+ * the reduced M and K.  indep: "x, ..." the independent coordinates, or
+ * NULL (chosen by the library). */
 int cli_con_modes(cli_lin_run *r, const double *q0, const char *indep, bool json);
-int cli_con_linearize(cli_lin_run *r, const double *q0, const char *indep, bool json);
-/* q0 for a model that keeps constraints: --about's values (unnamed 0), else
- * the equilibrium qd_equilibria_choose takes (a note says which). */
-int cli_con_point(cli_lin_run *r, const char *about, bool quiet, double *q0);
+/* The state manifold's path (qdot/conlin.h) for `linearize` and `modes`:
+ * the options given (NULL when not), the format, --steps of --scan (0: 100)
+ * and whether to print the modes (qd_conlin_modes_print) or the state-space
+ * form (qd_conlin_render). */
+typedef struct cli_conlin_args {
+    const char *about, *independent, *scan, *lqr;
+    int fmt;        /* qd_ss_format */
+    size_t steps;
+    bool modes;
+    const char *ignore;   /* stability --ignore: these must be ignorable, or NULL */
+    const char *about_opt; /* the option about came from (NULL: "--about") */
+    const struct cli_plot_args *look; /* --scan --plot FILE: the eigenvalues drawn, or NULL */
+} cli_conlin_args;
+int cli_conlin(cli_lin_run *r, const cli_conlin_args *a);
 
 /* ---- --scan (scan_cli.c) --------------------------------------------------- */
 
 /* "NAME=A:B": the parameter's name (cap bytes) and the range's ends. */
+/* linearize --scan --plot FILE: the scan's eigenvalues drawn (qd_conlin_scan_plot) with
+ * the picture's options, the title the model file's name unless --title. */
+struct qd_conlin_scan;
+struct cli_plot_args;
+int cli_scan_plot(qd_ctx *ctx, const struct qd_conlin_scan *sc, const char *name,
+                  const struct cli_plot_args *look, const char *model_path);
 int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double *a,
                    double *b);
 /* `qdot modes FILE --scan NAME=A:B [--about ...] [--steps N]`: scan, print. */

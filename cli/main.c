@@ -34,7 +34,7 @@ static const cli_cmd commands[] = {
     {"lyapunov", "FILE --t-end T [--exponents K]", "Lyapunov exponents: Benettin, QR, the sum check",
      cli_cmd_lyapunov},
     {"codegen", "FILE [-o DIR]", "self-contained C for the right-hand side", cli_cmd_codegen},
-    {"equilibria", "FILE [--near ...|--box ...]", "equilibria and their kind",
+    {"equilibria", "FILE [--guess ...|--box ...]", "equilibria and their kind",
      cli_cmd_equilibria},
     {"linearize", "FILE [--about ...] [--format F]", "state space x' = A x + B u, controllability",
      cli_cmd_linearize},

@@ -11,6 +11,7 @@
 #include <stdio_ext.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli.h"
 
@@ -51,6 +52,31 @@ int cli_out_put(void *data, const char *bytes, size_t len) {
     return cli_out_write(o->f, bytes, len, &o->err) ? 0 : 1;
 }
 
+/* What standard output is, for messages: a file after -o FILE. */
+static const char *stdout_name = "standard output";
+
+int cli_stdout_to(const char *path) {
+    if (!strcmp(path, "-"))
+        return QD_EXIT_OK;
+    int rc = QD_EXIT_OK;
+    FILE *f = cli_out_open(path, &rc);
+    if (!f)
+        return rc;
+    fflush(stdout); /* nothing is written before the options are read; if it were, it stays */
+    int fd = fileno(f);
+    if (fd != STDOUT_FILENO) { /* fd 1 itself when qdot started with stdout closed (>&-) */
+        if (dup2(fd, STDOUT_FILENO) < 0) {
+            cli_diag_error("cannot write %s: %s", path, strerror(errno));
+            fclose(f);
+            return QD_EXIT_FAIL;
+        }
+        fclose(f);
+    }
+    clearerr(stdout); /* a closed stdout's earlier error belongs to the old file */
+    stdout_name = path;
+    return QD_EXIT_OK;
+}
+
 static void cannot_write(const char *name, int err) {
     cli_diag_error("cannot write %s: %s", name, err ? strerror(err) : "write error");
 }
@@ -63,7 +89,7 @@ int cli_out_close(FILE *f, const char *name, int err) {
     bad = bad || ferror(f) || err;
     if (f == stdout) {
         if (bad) {
-            cannot_write("standard output", err);
+            cannot_write(stdout_name, err);
             clearerr(f); /* said once: main does not repeat it */
         }
         return bad ? QD_EXIT_FAIL : QD_EXIT_OK;
@@ -105,7 +131,7 @@ int cli_close_stdout(int rc) {
     bool close_failed = fclose(stdout) != 0;
     int err = errno;
     if (failed || (close_failed && (pending || err != EBADF))) {
-        cannot_write("standard output", close_failed ? err : 0);
+        cannot_write(stdout_name, close_failed ? err : 0);
         return rc != 0 ? rc : QD_EXIT_FAIL;
     }
     return rc;

@@ -53,6 +53,13 @@ extern const char *const cli_formats_text_json[]; /* "text", "json", NULL */
      "write the result to FILE (default: standard output)", NULL, NULL}
 bool cli_json(const char *format); /* format is "json" */
 
+/* -o/--out FILE of a command that has no --out of its own (cli_parse):
+ * from now on standard output is FILE, opened as cli_out_open does (a
+ * directory or a path that cannot be created: exit 2), and the messages
+ * of cli_out_close and cli_close_stdout name FILE.  "-" keeps standard
+ * output.  Returns the exit status (0 or 2). */
+int cli_stdout_to(const char *path);
+
 /* Close standard output once, at the end of main: exit status 1 with the
  * message when anything written to it was lost; else rc. */
 int cli_close_stdout(int rc);

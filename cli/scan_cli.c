@@ -7,8 +7,10 @@
  */
 #include "linear_cli.h"
 
+#include "qdot/scanplot.h"
 #include "qdot/state.h"
 #include "model_cli.h"
+#include "plot_cli.h"
 
 /* ---- reading --------------------------------------------------------------- */
 
@@ -17,6 +19,23 @@ int cli_scan_range(qd_ctx *ctx, const char *text, char *name, size_t cap, double
     if (qd_state_named_range(ctx, NULL, text, name, cap, a, b) != QD_OK)
         return cli_state_diag(ctx, "--scan", text);
     return QD_EXIT_OK;
+}
+
+/* ---- the picture ---------------------------------------------------------------- */
+
+int cli_scan_plot(qd_ctx *ctx, const struct qd_conlin_scan *sc, const char *name,
+                  const struct cli_plot_args *look, const char *model_path) {
+    qd_plot_run_opts o = cli_plot_opts(look, model_path);
+    qd_plot *p = NULL;
+    qd_status st = qd_conlin_scan_plot(ctx, sc, name, o.title, &p);
+    if (st == QD_OK)
+        st = qd_plot_apply(p, &o);
+    if (st == QD_OK)
+        st = qd_plot_write(p, look->file);
+    qd_plot_free(p);
+    if (st == QD_OK)
+        return QD_EXIT_OK;
+    return qd_ctx_status(ctx) != QD_OK ? cli_diag_ctx(ctx) : QD_EXIT_FAIL;
 }
 
 /* ---- the command ------------------------------------------------------------------- */

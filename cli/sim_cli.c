@@ -212,6 +212,9 @@ void cli_sim_free(cli_sim *c) {
 }
 
 int cli_sim_fail(cli_sim *c, qd_status st) {
+    /* the initial velocities given violate a constraint: bad input */
+    if (st == QD_ERR_ARG && !strcmp(qd_ctx_diag(c->ctx)->name, "initial"))
+        return cli_sim_fail_in(c, "--initial", NULL);
     const char *msg = qd_ctx_message(c->ctx);
     cli_diag_error("%s", msg[0] ? msg : qd_status_str(st));
     /* options were checked before the run: what fails now is the system's,

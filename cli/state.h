@@ -25,7 +25,7 @@ int cli_state_init(qd_ctx *ctx, const qd_model *m, cli_state *st);
 void cli_state_free(cli_state *st);
 /* Apply an --at list (qd_state_read); errors located in it. */
 int cli_state_parse(qd_ctx *ctx, const qd_model *m, const char *text, cli_state *st);
-/* The same for another option (what: "--near"), named so in the errors. */
+/* The same for another option (what: "--guess"), named so in the errors. */
 int cli_state_parse_as(qd_ctx *ctx, const qd_model *m, const char *what, const char *text,
                       cli_state *st);
 /* The same with the reader's options (what it refuses, what it reports). */

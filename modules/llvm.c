@@ -77,6 +77,11 @@ static LLVMValueRef intrinsic(build *s, const char *name) {
     return f;
 }
 
+static void store(build *s, LLVMValueRef base, size_t k, LLVMValueRef v) {
+    LLVMValueRef idx = LLVMConstInt(LLVMInt64TypeInContext(s->c), k, 0);
+    LLVMBuildStore(s->b, v, LLVMBuildInBoundsGEP2(s->b, s->d, base, &idx, 1, ""));
+}
+
 /* SUMN and PRODN as prog.c's sumn and prodn compute them. */
 static LLVMValueRef sumn(build *s, const uint32_t *a) {
     size_t np = a[0], n = np + a[1], k = 1;
@@ -150,13 +155,10 @@ static LLVMValueRef instruction(build *s, const qd_prog *p, const instr *i,
     return NULL;
 }
 
-/* void qd_jit(const double *in, double *out) */
-static void function(build *s, const qd_prog *p, const qd__jit_env *env) {
-    LLVMTypeRef dp = LLVMPointerType(s->d, 0), args[2] = {dp, dp};
-    LLVMTypeRef ft = LLVMFunctionType(LLVMVoidTypeInContext(s->c), args, 2, 0);
-    LLVMValueRef f = LLVMAddFunction(s->m, "qd_jit", ft);
-    LLVMValueRef in = LLVMGetParam(f, 0), out = LLVMGetParam(f, 1);
-    LLVMPositionBuilderAtEnd(s->b, LLVMAppendBasicBlockInContext(s->c, f, "entry"));
+/* The program's instructions into the current block of f: its inputs
+ * loaded from in, each register an SSA value, the outputs stored to out. */
+static void body(build *s, const qd_prog *p, const qd__jit_env *env, LLVMValueRef in,
+                 LLVMValueRef out) {
     LLVMTypeRef i64 = LLVMInt64TypeInContext(s->c);
     for (size_t k = 0; k < p->nin; k++) {
         LLVMValueRef idx = LLVMConstInt(i64, k, 0);
@@ -167,12 +169,80 @@ static void function(build *s, const qd_prog *p, const qd__jit_env *env) {
         s->v[p->nin + k] = LLVMConstReal(s->d, p->consts[k]);
     for (size_t k = 0; k < p->ncode; k++)
         s->v[p->code[k].dst] = instruction(s, p, &p->code[k], env);
-    for (size_t k = 0; k < p->nout; k++) {
-        LLVMValueRef idx = LLVMConstInt(i64, k, 0);
-        LLVMValueRef at = LLVMBuildInBoundsGEP2(s->b, s->d, out, &idx, 1, "");
-        LLVMBuildStore(s->b, s->v[p->out[k]], at);
-    }
+    for (size_t k = 0; k < p->nout; k++)
+        store(s, out, k, s->v[p->out[k]]);
+}
+
+/* void qd_jit(const double *in, double *out) */
+static void function(build *s, const qd_prog *p, const qd__jit_env *env) {
+    LLVMTypeRef dp = LLVMPointerType(s->d, 0), args[2] = {dp, dp};
+    LLVMTypeRef ft = LLVMFunctionType(LLVMVoidTypeInContext(s->c), args, 2, 0);
+    LLVMValueRef f = LLVMAddFunction(s->m, "qd_jit", ft);
+    LLVMPositionBuilderAtEnd(s->b, LLVMAppendBasicBlockInContext(s->c, f, "entry"));
+    body(s, p, env, LLVMGetParam(f, 0), LLVMGetParam(f, 1));
     LLVMBuildRetVoid(s->b);
+}
+
+/* int qd_jit(const double *in, double *out, double *x): the program, then
+ * src/num/cholesky.c's qd__num_solve_spd on its outputs M and f unrolled,
+ * the same operations in the same order (a - b*c as a separate multiply
+ * and subtract, never fused), so that x is that function's bit for bit.
+ * Its tests become one flag with no branch: a failed factor only makes
+ * NaNs in x, which the caller then ignores for its own solve. */
+static void spd_function(build *s, const qd_prog *p, size_t n, double tol,
+                         const qd__jit_env *env) {
+    LLVMTypeRef dp = LLVMPointerType(s->d, 0), args[3] = {dp, dp, dp};
+    LLVMTypeRef i32 = LLVMInt32TypeInContext(s->c);
+    LLVMValueRef f = LLVMAddFunction(s->m, "qd_jit", LLVMFunctionType(i32, args, 3, 0));
+    LLVMBuilderRef b = s->b;
+    LLVMPositionBuilderAtEnd(b, LLVMAppendBasicBlockInContext(s->c, f, "entry"));
+    body(s, p, env, LLVMGetParam(f, 0), LLVMGetParam(f, 1));
+    LLVMValueRef *A = s->v + p->nreg; /* M, then f: room past the registers */
+    for (size_t k = 0; k < n * n + n; k++)
+        A[k] = s->v[p->out[k]];
+    LLVMValueRef *r = A + n * n, zero = LLVMConstReal(s->d, 0.0);
+    LLVMValueRef inf = LLVMConstReal(s->d, HUGE_VAL), one = LLVMConstReal(s->d, 1.0);
+    /* solve_mass's all_finite(M): |m| ordered and not inf */
+    LLVMValueRef ok = LLVMConstInt(LLVMInt1TypeInContext(s->c), 1, 0);
+    for (size_t k = 0; k < n * n; k++)
+        ok = LLVMBuildAnd(b, ok, LLVMBuildFCmp(b, LLVMRealONE, call1(s, s->fabs, A[k]), inf, ""),
+                          "");
+    LLVMValueRef big = zero; /* big = A > big ? A : big, finite with M */
+    for (size_t j = 0; j < n; j++) {
+        LLVMValueRef a = A[j * n + j];
+        big = LLVMBuildSelect(b, LLVMBuildFCmp(b, LLVMRealOGT, a, big, ""), a, big, "");
+    }
+    ok = LLVMBuildAnd(b, ok, LLVMBuildFCmp(b, LLVMRealOGT, big, zero, ""), "");
+    LLVMValueRef tb = LLVMBuildFMul(b, LLVMConstReal(s->d, tol), big, "");
+    for (size_t j = 0; j < n; j++) {
+        LLVMValueRef d = A[j * n + j];
+        for (size_t k = 0; k < j; k++)
+            d = LLVMBuildFSub(b, d, LLVMBuildFMul(b, A[j * n + k], A[j * n + k], ""), "");
+        ok = LLVMBuildAnd(b, ok, LLVMBuildFCmp(b, LLVMRealOGT, d, tb, ""), "");
+        LLVMValueRef l = call1(s, s->sqrt, d), inv = LLVMBuildFDiv(b, one, l, "");
+        A[j * n + j] = l;
+        for (size_t i = j + 1; i < n; i++) {
+            LLVMValueRef t = A[i * n + j];
+            for (size_t k = 0; k < j; k++)
+                t = LLVMBuildFSub(b, t, LLVMBuildFMul(b, A[i * n + k], A[j * n + k], ""), "");
+            A[i * n + j] = LLVMBuildFMul(b, t, inv, "");
+        }
+    }
+    for (size_t i = 0; i < n; i++) { /* L y = f */
+        LLVMValueRef t = r[i];
+        for (size_t k = 0; k < i; k++)
+            t = LLVMBuildFSub(b, t, LLVMBuildFMul(b, A[i * n + k], r[k], ""), "");
+        r[i] = LLVMBuildFDiv(b, t, A[i * n + i], "");
+    }
+    for (size_t i = n; i-- > 0;) { /* L^T x = y */
+        LLVMValueRef t = r[i];
+        for (size_t k = i + 1; k < n; k++)
+            t = LLVMBuildFSub(b, t, LLVMBuildFMul(b, A[k * n + i], r[k], ""), "");
+        r[i] = LLVMBuildFDiv(b, t, A[i * n + i], "");
+    }
+    for (size_t i = 0; i < n; i++)
+        store(s, LLVMGetParam(f, 2), i, r[i]);
+    LLVMBuildRet(b, LLVMBuildZExt(b, ok, i32, ""));
 }
 
 static void say(char *err, size_t cap, const char *what, LLVMErrorRef e) {
@@ -215,11 +285,17 @@ static LLVMOrcLLJITRef make_jit(char *err, size_t cap) {
     return j;
 }
 
-static void *compile(const qd_prog *p, const qd__jit_env *env, qd__jit_fn *fn, char *err,
-                     size_t cap) {
+/* Machine code for p: spd_n 0 the plain function, else the fused one of
+ * spd_function; its address in *addr. */
+static void *emit(const qd_prog *p, size_t spd_n, double tol, const qd__jit_env *env,
+                  uintptr_t *addr, char *err, size_t cap) {
     pthread_once(&once, init);
     if (!ready) {
         snprintf(err, cap, "LLVM has no native target here");
+        return NULL;
+    }
+    if (spd_n && p->nout < spd_n * spd_n + spd_n) {
+        snprintf(err, cap, "the program has no %zu-by-%zu system to solve", spd_n, spd_n);
         return NULL;
     }
     LLVMOrcLLJITRef j = make_jit(err, cap);
@@ -227,7 +303,9 @@ static void *compile(const qd_prog *p, const qd__jit_env *env, qd__jit_fn *fn, c
         return NULL;
     LLVMOrcThreadSafeContextRef tsc = LLVMOrcCreateNewThreadSafeContext();
     build s = {.c = LLVMOrcThreadSafeContextGetContext(tsc)};
-    s.v = calloc(p->nreg ? p->nreg : 1, sizeof *s.v);
+    /* the fused function keeps M and f past the registers */
+    size_t nv = p->nreg + (spd_n ? spd_n * spd_n + spd_n : 0);
+    s.v = calloc(nv ? nv : 1, sizeof *s.v);
     if (!s.v) {
         snprintf(err, cap, "out of memory");
         LLVMOrcDisposeThreadSafeContext(tsc);
@@ -244,21 +322,42 @@ static void *compile(const qd_prog *p, const qd__jit_env *env, qd__jit_fn *fn, c
     s.ptr2 = LLVMPointerType(s.fn2, 0);
     s.sqrt = intrinsic(&s, "llvm.sqrt.f64");
     s.fabs = intrinsic(&s, "llvm.fabs.f64");
-    function(&s, p, env);
+    if (spd_n)
+        spd_function(&s, p, spd_n, tol, env);
+    else
+        function(&s, p, env);
     LLVMDisposeBuilder(s.b);
     free(s.v);
     LLVMOrcThreadSafeModuleRef tsm = LLVMOrcCreateNewThreadSafeModule(s.m, tsc);
     LLVMOrcDisposeThreadSafeContext(tsc); /* the module holds it now */
     LLVMErrorRef e = LLVMOrcLLJITAddLLVMIRModule(j, LLVMOrcLLJITGetMainJITDylib(j), tsm);
-    LLVMOrcExecutorAddress addr = 0;
+    LLVMOrcExecutorAddress a = 0;
     if (!e)
-        e = LLVMOrcLLJITLookup(j, &addr, "qd_jit");
-    if (e || !addr) {
+        e = LLVMOrcLLJITLookup(j, &a, "qd_jit");
+    if (e || !a) {
         say(err, cap, "LLVM did not compile the program", e);
         LLVMOrcDisposeLLJIT(j);
         return NULL;
     }
-    memcpy(fn, &(uintptr_t){(uintptr_t)addr}, sizeof *fn);
+    *addr = (uintptr_t)a;
+    return j;
+}
+
+static void *compile(const qd_prog *p, const qd__jit_env *env, qd__jit_fn *fn, char *err,
+                     size_t cap) {
+    uintptr_t a = 0;
+    void *j = emit(p, 0, 0, env, &a, err, cap);
+    if (j)
+        memcpy(fn, &a, sizeof *fn);
+    return j;
+}
+
+static void *compile_spd(const qd_prog *p, size_t n, double tol, const qd__jit_env *env,
+                         qd__jit_spd_fn *fn, char *err, size_t cap) {
+    uintptr_t a = 0;
+    void *j = emit(p, n, tol, env, &a, err, cap);
+    if (j)
+        memcpy(fn, &a, sizeof *fn);
     return j;
 }
 
@@ -267,6 +366,6 @@ static void release(void *code) {
         LLVMOrcDisposeLLJIT(code);
 }
 
-static const qd__jit_ops ops = {compile, release};
+static const qd__jit_ops ops = {compile, release, compile_spd};
 
 const qd__jit_ops *qd_ext_llvm_ops(void) { return &ops; }

@@ -46,15 +46,22 @@
  * heading's column in the lean row is 5e-15 for the bicycle) and are set to
  * 0, so each ignorable state gives an eigenvalue exactly 0
  * (det(sI - A) = s det of A without that row and column) and the others,
- * the core, decide stability.  The point need not be an
- * equilibrium: an ignorable state may move (the bicycle's run at speed v);
- * x' at the point is reported (qd_statespace.xdot0).
+ * the core, decide stability (qd_conlin.stable, .marginal).  The point need
+ * not be an equilibrium: an ignorable state may move (the bicycle's run at
+ * speed v); x' at the point is reported (qd_statespace.xdot0).
+ *
+ * Outputs y = h(q, q', u, t) (the model's `outputs`): along the manifold
+ * dy = (dh/dz) T dx + (dh/du) du, so C = (dh/dz) T and D = dh/du, from the
+ * forward-mode Jacobian of the compiled h (a dependent coordinate as an
+ * output moves with the independent ones: the pendulum's height q1 =
+ * sqrt(L^2 - q2^2) gives C = -q2/q1 in q2).
  */
 #ifndef QDOT_CONLIN_H
 #define QDOT_CONLIN_H
 
 #include <stdbool.h>
 #include <stddef.h>
+#include "equilibria.h"
 #include "linpoint.h"
 #include "mech.h"
 #include "model.h"
@@ -77,9 +84,24 @@ typedef struct qd_conlin {
     bool *ignorable;        /* nx */
     size_t ncore;           /* the states not ignorable */
     double *core_re, *core_im; /* ncore: the core's eigenvalues, sorted as ss's */
+    double *lambda;         /* ncon: the multipliers at the point (e->con's order) */
+    const qd_expr **lambda_sym; /* ncon: their symbols (lambda_NAME) */
+    double margin;          /* the core's largest Re s (-inf without a core) */
+    double tol;             /* QD_CONLIN_MARGIN_TOL times the core's largest |s| (and 1) */
+    bool steady;            /* x' vanishes in every core state (to 1e-9 of the point's
+                               scale): a steady motion, which the verdict is about */
+    bool stable;            /* steady and margin <= tol: no core eigenvalue has Re s > 0 */
+    bool marginal;          /* stable with margin >= -tol: eigenvalues on the imaginary
+                               axis (a conservative core, a family of steady motions) */
     qd_statespace ss;       /* A, B over the independent states (ss.states: q_j, q'_j),
-                               their eigenvalues, controllability; no outputs */
+                               C, D of m's outputs (dy/dz T, dy/du), their eigenvalues,
+                               controllability and observability */
 } qd_conlin;
+
+/* Round-off puts the imaginary pairs of a conservative core at Re s ~ 1e-16:
+ * a core eigenvalue counts as unstable above this fraction of the core's
+ * largest |s| (the verdict, the scan's crossings). */
+#define QD_CONLIN_MARGIN_TOL 1e-10
 
 /* The linearization of e (derived from m, with constraints) about the
  * point pt->st (its coordinates and velocities; t, the parameters at their
@@ -91,7 +113,7 @@ typedef struct qd_conlin {
  * whose dependent states the constraints do not determine there (the
  * message says which); QD_ERR_ARG when Newton does not reach the manifold
  * (the residual named); QD_ERR_UNSUPPORTED for a model without
- * constraints (qd_linearize) or with outputs (not done here yet);
+ * constraints (qd_linearize);
  * QD_ERR_SINGULAR when K is singular at the point; QD_ERR_NUMERIC for a
  * value that is not finite there.  Free with qd_conlin_free (also after a
  * failure). */
@@ -116,6 +138,29 @@ QD_API qd_status qd_conlin_keep_core(qd_ctx *ctx, qd_conlin *c);
  * value that is not one velocity (u = r*pr': give the velocities). */
 QD_API qd_status qd_conlin_point(qd_ctx *ctx, const qd_model *m, qd_linpoint *pt,
                                  const char *about);
+
+/* The point a command linearizes about (src/linear/conlin_start.c):
+ * qd_conlin_point's, except that without about, for equations that keep
+ * holonomic constraints alone (qd_conlin_needed false: a system at rest on
+ * them, like a pendulum in x and y), the equilibrium on the constraints
+ * qd_equilibria_choose takes from that state (the velocities 0): what
+ * `qdot modes` takes, so both agree.  choice is filled then (choice->pt
+ * the point; say which with qd_equilibrium_choice_note), else left empty.
+ * QD_ERR_NUMERIC when no equilibrium is found ("give a point with
+ * --about"), and the errors of qd_conlin_point and of the search.  Free
+ * choice with qd_equilibrium_choice_free (also after a failure). */
+QD_API qd_status qd_conlin_start(qd_ctx *ctx, const qd_eom *e, const qd_model *m,
+                                 qd_linpoint *pt, const char *about,
+                                 qd_equilibrium_choice *choice);
+
+/* `qdot stability --ignore q1, x, y` on the manifold: each coordinate
+ * named (commas or spaces) is independent and ignorable in c, its
+ * steady motion's cyclic coordinate (src/linear/conlin_start.c).
+ * QD_ERR_ARG located at the first that is no coordinate of the
+ * equations, a dependent one, or not ignorable (another rate depends on
+ * it), and for a list of none. */
+QD_API qd_status qd_conlin_require_ignorable(qd_ctx *ctx, const qd_conlin *c,
+                                             const char *names);
 
 /* ---- along a parameter (src/linear/conlin_scan.c) ------------------------ */
 
@@ -164,21 +209,37 @@ QD_API void qd_conlin_scan_free(qd_conlin_scan *s);
  * ...", "point: NAME = V, ..." (every coordinate and velocity, the
  * dependent ones solved), "solved from the constraints: NAME = V (was W),
  * ..." for the dependent states Newton changed (when any), "ignorable:
- * ..." (or none) and the core's eigenvalues, each a line;
- * JSON: the members "independent", "dependent", "ignorable" (names),
- * "point" (object) and "core_eigenvalues" ([re, im] pairs), written
- * without braces, to precede qd_statespace_render's keys.  QD_ERR_NOMEM
- * (out unchanged). */
+ * ..." (or none), the core's eigenvalues and "multipliers: lambda_NAME =
+ * V, ..." (with constraints), each a line;
+ * JSON one object: "independent", "dependent", "ignorable" (names),
+ * "point" (object), "core_eigenvalues" ([re, im] pairs), "multipliers"
+ * ({lambda_NAME: V}), "stable", "marginal" (c's) and "verdict" ("stable",
+ * "marginally stable", "unstable").  QD_ERR_NUMERIC for a number JSON
+ * cannot hold, QD_ERR_NOMEM (out unchanged). */
 QD_API qd_status qd_conlin_print(const qd_conlin *c, bool json, qd_buf *out);
 
 /* c's notes (above) and its state-space form (qd_statespace_render of
  * c->ss, with the design lqr or NULL) in format fmt: text, the notes'
- * lines then the form's; JSON one object with the notes' members and the
- * form's; C, SymPy and Octave the form's alone.  The errors of
+ * lines, the form's, then the verdict line (qd_conlin_modes_print's); JSON
+ * one object with the notes' members and the form's (the keys of
+ * `linearize` without constraints: "states", "A", "B", "C", "D",
+ * "eigenvalues", ...); C, SymPy and Octave the form's alone.  The errors of
  * qd_statespace_render (out unchanged). */
 QD_API qd_status qd_conlin_render(qd_ctx *ctx, const qd_conlin *c,
                                   const struct qd_care_result *lqr, qd_ss_format fmt,
                                   qd_buf *out);
+
+/* `qdot modes` on the manifold: the notes of qd_conlin_print, then (text)
+ * the eigenvalues of A a line each ("s = RE +- IM i", with w = Im s for
+ * Im s > 0) and the verdict line, the same as qd_conlin_render's: "verdict:
+ * stable", "marginally stable" (the core's largest Re s within c->tol of
+ * 0: the linearization does not decide) or "unstable", with that Re s;
+ * JSON one object: the notes' members (their "stable", "marginal",
+ * "verdict"), "states" and "eigenvalues" ([re, im] pairs, as in
+ * qd_statespace_render), then a newline.  QD_ERR_NUMERIC for a number JSON
+ * cannot hold, QD_ERR_NOMEM (out unchanged; recorded in ctx). */
+QD_API qd_status qd_conlin_modes_print(qd_ctx *ctx, const qd_conlin *c, bool json,
+                                       qd_buf *out);
 
 /* Whether e needs qd_conlin_about rather than the holonomic reduction of
  * qdot/constrained.h: it keeps a velocity constraint (Pfaffian,

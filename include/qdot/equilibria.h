@@ -82,8 +82,12 @@ typedef struct qd_equilibria_opts {
                                 applies) */
 } qd_equilibria_opts;
 
-/* Which coordinates are angles (appear inside sin or cos of f at rest, T or
- * V), and the default box: angles [-pi, pi], others [-10, 10]. */
+/* Which coordinates are angles, and the default box: angles [-pi, pi],
+ * others [-10, 10].  An angle is a coordinate the equations f, L, T and V
+ * are 2 pi-periodic in: it appears inside sin, cos or tan and only there,
+ * each time as k q + (terms free of q) with k a nonzero integer (a pendulum
+ * angle that a spring also stretches, V = k/2 (th2 - th1)^2, is not one).
+ * QD_ERR_NOMEM when memory runs out. */
 QD_API qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
                                     double *lo, double *hi);
 
@@ -98,19 +102,19 @@ QD_API void qd_equilibria_free(qd_equilibria *r);
 
 struct qd_linpoint; /* qdot/linpoint.h */
 
-/* The search `qdot equilibria --near ... --box ...` makes, for the
+/* The search `qdot equilibria --guess ... --box ...` makes, for the
  * equations and state of p (qd_linpoint_init; parameters at their values):
- * near "q1=VALUE, ..." (qd_linpoint_read_coords, the unnamed coordinates 0)
+ * guess "q1=VALUE, ..." (qd_linpoint_read_coords, the unnamed coordinates 0)
  * is Newton from there only; box "q1=LOW:HIGH, ..." (qd_linpoint_read_box
  * over qd_equilibria_default_box's ranges) the multi-start search there,
  * numerically only; both NULL the default (the exact attempt, then the
- * default box).  An error in reading near or box is located in that text
+ * default box).  An error in reading guess or box is located in that text
  * and *where (may be NULL) set to it; *where is NULL for every other
  * failure (the search's: QD_ERR_UNSUPPORTED for a constraint the manifold
  * search does not take).  Free out with qd_equilibria_free (also after a
  * failure). */
 QD_API qd_status qd_equilibria_find_text(qd_ctx *ctx, const struct qd_linpoint *p,
-                                         const char *near, const char *box, qd_equilibria *out,
+                                         const char *guess, const char *box, qd_equilibria *out,
                                          const char **where);
 
 /* Which equilibrium to use when the caller names none (small oscillations

@@ -31,6 +31,7 @@
 #include <stddef.h>
 #include "expr.h"
 #include "certify.h"
+#include "metric.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -165,6 +166,96 @@ QD_API qd_status qd_periods_vectors_read(qd_ctx *ctx, const char *text, size_t n
                                          const qd_expr ***out);
 QD_API void qd_periods_vectors_free(const qd_expr **w);
 
+/* ---- Gram-Schmidt orthogonalization (Desloge App. 21) ---------------------
+ * s linearly independent vectors a(1..s) of n components, and a symmetric
+ * n x n matrix T (NULL: the identity), give
+ *
+ *     b(1) = a(1),   b(r) = a(r) - sum_{j<r} [a(r)^T T b(j) / b(j)^T T b(j)] b(j)
+ *
+ * (Thm 2, eqs. 3a-3b; with T the identity Thm 1, eqs. 1a-1b), vectors that
+ * span the same space with b(i)^T T b(j) = 0 for i != j (eq. 4).  Exact in
+ * rational or symbolic entries; eq. 4 is checked afterwards by the zero
+ * test (qdot/certify.h).  The kinetic metric as T orthogonalizes the
+ * coordinate tangents (`qdot metric --gram-schmidt`); the mass matrix, the
+ * modal vectors of a repeated frequency (Desloge ch. 65). */
+typedef struct qd_gram {
+    size_t n, s;              /* components, vectors */
+    bool euclidean;           /* T was NULL or the identity (Thm 1) */
+    const qd_expr **a;        /* s * n: the given vectors, simplified */
+    const qd_expr **b;        /* s * n: the orthogonal ones, row-major */
+    const qd_expr **norm;     /* s: b(r)^T T b(r) */
+    const qd_expr **coef;     /* s * s: coef[r s + j] = a(r)^T T b(j) / b(j)^T T b(j)
+                                 for j < r, 0 for j >= r: a(r) = b(r) + sum_j coef b(j) */
+    qd_zero_kind check;       /* eq. 4's zero tests: QD_ZERO_PROVEN for all, or
+                                 QD_ZERO_NUMERIC when one was verified numerically */
+} qd_gram;
+
+/* The orthogonalization above of the s vectors a (row-major s * n) under T
+ * (n * n, row-major, or NULL).  NULL on failure, reason in ctx: QD_ERR_ARG
+ * for no vectors, more than n, an asymmetric T, or an a(r) that is a
+ * linear combination of those before it (b(r) = 0, named); QD_ERR_SINGULAR
+ * for a b(r) != 0 with b(r)^T T b(r) = 0 (T not definite: the process
+ * divides by it).  Free with qd_gram_free. */
+QD_API qd_gram *qd_gram_schmidt(qd_ctx *ctx, size_t n, const qd_expr *const *T, size_t s,
+                                const qd_expr *const *a);
+QD_API void qd_gram_free(qd_gram *g);
+
+/* ---- change of variables in an integral (Desloge App. 19) -----------------
+ * The n old variables x given in terms of n new ones y, x = x(y), have the
+ * Jacobian matrix dx_i/dy_j and determinant J(x/y), with J(y/x) = 1/J(x/y)
+ * (App. 18), and where J does not vanish
+ *
+ *     int_R f(x) dx = int_R' f(x(y)) |J(x/y)| dy        (App. 19 eq. 1),
+ *
+ * the limits chosen so that both volumes are positive.  Where J vanishes
+ * the map is not invertible and J may change sign, and the region must be
+ * split there (p. 913): the zero set of J, factor by factor, as the
+ * metric's chart has it (r = 0; theta = 0 + k pi).  |J| is J or -J when
+ * J's form shows its sign (positive symbols, even powers: qd_symbol_positive
+ * makes a new variable or a parameter positive), else abs(J).  Desloge ch. 60
+ * eq. 6 (s = s(theta), psi = phi: sigma = s/sin(theta) |ds/dtheta|) is such
+ * a change. */
+typedef struct qd_change {
+    size_t n;
+    const qd_expr **x, **y, **map;  /* n each: old and new variables, x_i(y) simplified */
+    const qd_expr **jac;            /* n*n row-major: dx_i/dy_j */
+    const qd_expr *det, *inverse;   /* J(x/y) and J(y/x) = 1/J(x/y) */
+    int sign;                       /* 1: J >= 0 by its form, -1: J <= 0, 0: not known */
+    const qd_expr *absdet;          /* |J|: J, -J, or abs(J) when the sign is not known */
+    const qd_expr *f, *integrand;   /* f(x) and f(x(y)) |J| (NULL when no f was given) */
+    size_t nsing;                   /* the zero set of J, in the new variables */
+    qd_metric_singular *sing;
+} qd_change;
+
+/* The change x = map(y) (n each; map free of x) with f (NULL: none) into a
+ * new qd_change.  NULL on failure, reason in ctx: QD_ERR_ARG for a variable
+ * that is not a symbol or is given twice, or a map that depends on an old
+ * variable; QD_ERR_SINGULAR when J is identically 0.  Free with
+ * qd_change_free. */
+QD_API qd_change *qd_change_vars(qd_ctx *ctx, const qd_expr *f, size_t n,
+                                 const qd_expr *const *x, const qd_expr *const *y,
+                                 const qd_expr *const *map);
+QD_API void qd_change_free(qd_change *c);
+
+/* The map read from text, "x = r*cos(th), y = r*sin(th)" (items split at
+ * the commas outside brackets, qd_state_item_end; a trailing comma ends the
+ * list): map[i] is the expression given for x[i] (unknown names become
+ * plain symbols, so the new variables are made here unless made before).
+ * On failure the context's error record is located in text (qd_ctx_diag):
+ * QD_ERR_ARG for an item without '=', a name that is not among x or is given
+ * twice (a caret under it), an x not given (the whole text); the reader's
+ * status for an expression. */
+QD_API qd_status qd_change_read(qd_ctx *ctx, const char *text, size_t n,
+                                const qd_expr *const *x, const qd_expr **map);
+
+/* Names read as qd_qform_vars_read reads them, each made a symbol assumed
+ * positive (qd_symbol_positive: abs(r) is r) unless it is one already:
+ * `qdot form --positive "r, b"`.  QD_ERR_ARG located at a name that is
+ * already a symbol of either sign (its sign is fixed when it is made) or
+ * is not a name. */
+QD_API qd_status qd_qform_positive_read(qd_ctx *ctx, const char *text, const qd_expr **x,
+                                        size_t cap, size_t *n);
+
 #ifdef __cplusplus
 }
 #endif
@@ -173,6 +264,6 @@ QD_API void qd_periods_vectors_free(const qd_expr **w);
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
- * documented at the function, for: qd_periods_reduce (f). An array whose
+ * documented at the function, for: qd_periods_reduce (f), qd_gram_schmidt (T), qd_change_vars (f). An array whose
  * count is 0 may be NULL. */
 #endif

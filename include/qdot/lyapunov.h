@@ -279,13 +279,6 @@ typedef struct qd_poincare_result {
 QD_API qd_status qd_poincare_run(qd_sim *s, const qd_sim_opts *opts, const qd_poincare_opts *o,
                                  qd_poincare_result *r);
 
-/* The line `qdot poincare` says after a run r of method (src/lyap/section_out.c),
- * prefix (NULL: none) before it, appended to out:
- *   METHOD, N crossings by t = T: S steps, E evaluations, R rejected; energy
- *   error X over the steps and crossings
- * QD_ERR_NOMEM when out ran out. */
-QD_API qd_status qd_poincare_summary_print(const qd_poincare_result *r, qd_sim_method method,
-                                           const char *prefix, qd_buf *out);
 /* `qdot poincare --format json`, the shape of simulate's document: begin
  * opens the object in j with "model" (the model file, NULL: null) and, when
  * rows, "columns" (names[0..ncols)) and an open "rows" array, to which the
@@ -414,6 +407,5 @@ QD_API qd_status qd_flow_setup_run(qd_ctx *ctx, const struct qd_sim_setup *set,
  * qd_flow_setup_run (write, data); qd_poincare_run's and
  * qd_poincare_orbits_run's o->progress and o->data; orbits->start and an
  * entry of orbits->initial; qd_poincare_csv (row: the header);
- * qd_poincare_summary_print (prefix); qd_poincare_json_begin (model; names
- * when !rows). An array whose count is 0 may be NULL. */
+ * qd_poincare_json_begin (model; names when !rows). An array whose count is 0 may be NULL. */
 #endif

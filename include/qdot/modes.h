@@ -482,7 +482,14 @@ struct qd_plot;            /* qdot/plot.h */
  * that moves only b (K0's entry not 0: a distance term of V, such as
  * k/2 (|ra - rb| - L)^2); a rod where their distance is not 0 and no
  * coordinate changes it to first order (a pendulum's links); a to the
- * origin (b == np) is a rod of constant length from a pivot there.  A
+ * origin (b == np) is a rod of constant length from a pivot there, or a
+ * spring from there where a term of V holds a by its distance from the
+ * origin alone (k/2 (r - l0)^2 of a spring pendulum; in a plane).  K0 here
+ * is that of V's terms that are not linear in the positions (gravity,
+ * m g y, holds a pendulum's bob but is drawn as nothing).  A rod to a
+ * pivot elsewhere (b > np, wall_axis 3: the point the particle's own
+ * coordinate swings it about, at a distance every coordinate keeps: the
+ * second of two pendulums hung side by side).  A
  * spring to a wall (b > np: wall b - np - 1 of the picture's walls) where
  * the configuration can be moved rigidly along an axis by each particle's
  * own coordinates and K0 does not let it (K0 T != 0 on a's coordinate
@@ -512,7 +519,7 @@ typedef struct qd_modes_picture {
     size_t nwalls;      /* the walls springs reach (at most QD_MODES_PLOT_MAXWALLS) */
     double wall[3 * QD_MODES_PLOT_MAXWALLS];  /* wall w's point: x, y, z at 3w */
     unsigned wall_axis[QD_MODES_PLOT_MAXWALLS]; /* its axis (0 x, 1 y, 2 z): the wall is
-                                                 * across it */
+                                                 * across it; 3: a pivot at the point */
 } qd_modes_picture;
 
 /* The particles of m at the equilibrium and moved along each mode of res,

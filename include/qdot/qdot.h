@@ -46,6 +46,7 @@
 #include "constrained.h"
 #include "tangent.h"      /* issue 37: forward-mode Jacobians of compiled programs */
 #include "conlin.h"       /* issue 37: linearization of constrained systems */
+#include "scanplot.h"     /* issue 37: a scan's eigenvalues drawn */
 #include "json.h"
 #include "simsetup.h"
 #include "render.h"     /* issue 31: printers of whole results */

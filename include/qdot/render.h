@@ -197,6 +197,29 @@ QD_API qd_status qd_render_periods(qd_ctx *ctx, const qd_expr *f, const qd_perio
                                    const qd_expr *const *x, const qd_expr *const *w,
                                    qd_render_format fmt, qd_buf *out);
 
+/* The Gram-Schmidt orthogonalization g (qd_gram_schmidt, qdot/form.h;
+ * Desloge App. 21) under T (n * n, or NULL for the identity), the
+ * components named by x (n, or NULL): in text T, the a's, each b(r) as
+ * a(r) less its components along the b's before it with its norm
+ * b(r)^T T b(r), and the check of eq. 4; in JSON "variables" ([] without
+ * x), "euclidean", "metric" (T's rows, null when euclidean), "vectors",
+ * "orthogonal", "norms", "coefficients" (s rows of s: a(r)'s along b(j),
+ * j < r) and "certainty" ("proven" or "numeric").  QD_ERR_ARG for another
+ * format. */
+QD_API qd_status qd_render_gram(qd_ctx *ctx, const qd_gram *g, const qd_expr *const *x,
+                                const qd_expr *const *T, qd_render_format fmt, qd_buf *out);
+
+/* The change of variables c (qd_change_vars, qdot/form.h; Desloge App. 19):
+ * in text the map x = x(y), the Jacobian matrix, J(x/y), J(y/x), J's sign,
+ * |J|, f and f(x(y)) |J| when f was given, and where J = 0; in JSON
+ * "variables", "new_variables", "map" (by old variable), "jacobian" (rows
+ * dx_i/dy_j), "jacobian_det", "inverse_det", "sign" ("nonnegative",
+ * "nonpositive", "unknown"), "abs_det", "f", "integrand" (null without f)
+ * and "singular" ({"lhs", "rhs", "period"}, as qdot metric's chart).
+ * QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_change(qd_ctx *ctx, const qd_change *c, qd_render_format fmt,
+                                  qd_buf *out);
+
 /* ---- impulsive motion (qdot/impulse.h) ----------------------------------- */
 
 /* Append r, the answer of qd_impulse_solve on m, to out: text (the
@@ -290,7 +313,8 @@ QD_API qd_status qd_render_hamiltonian(qd_ctx *ctx, const qd_model *m, const qd_
  * needs does nothing and returns QD_ERR_ARG (recorded in ctx when ctx is
  * given), NULL, 0, false or NaN, as its return type has it. NULL is an
  * accepted value, as documented at the function, for: qd_render_eom (o),
- * qd_render_speeds (o), qd_render_check (o), qd_render_periods (f), qd_render_hamiltonian (source,
+ * qd_render_speeds (o), qd_render_check (o), qd_render_periods (f), qd_render_gram (x, T),
+ * qd_render_hamiltonian (source,
  * at); qd_ham_point_free accepts NULL. Exception:
  * qd_render_format_parse(NULL, out) is false. */
 #endif

@@ -230,6 +230,15 @@ typedef struct qd_sim_opts {
      * an adaptive run that reaches it stops with QD_ERR_NUMERIC. */
     size_t max_steps;
     const double *q0, *qd0; /* n initial coordinates and velocities */
+    /* n flags (may be NULL): the velocities of qd0 the caller gave (the
+     * CLI's --initial), which the start of a constrained run keeps: the
+     * others are solved from the velocity constraints A q' + a0 = 0 (the
+     * least change of them; which ones changed: stats.initial_solved and
+     * qd_sim_initial_solved), and a constraint that only given velocities
+     * enter and that they violate is refused (QD_ERR_ARG, naming it and
+     * its residual; subject name "initial").  NULL or none set: every
+     * velocity is moved the least (the projection of qd0). */
+    const bool *qd0_given;
     /* A system made from H (qd_sim_new_hamilton): n initial momenta, or
      * NULL to find them from qd0 (dH/dp = q', solved by Newton's method:
      * QD_ERR_SINGULAR when d^2H/dp^2 is singular, as for H = p x). */
@@ -260,6 +269,13 @@ typedef struct qd_sim_opts {
      * numbers are the same bit for bit; without the JIT module (a build
      * without LLVM) the run is interpreted. */
     int jit;
+    /* Called after every step with its time (may be NULL): a progress bar,
+     * ^C.  A nonzero return stops the run there as the row callback's does
+     * (QD_STOP_CALLBACK): the rows written are whole.  A run whose rows are
+     * sparse (an output grid --dt, a crawl near a singular point) is then
+     * still seen and stopped between its rows. */
+    int (*progress)(void *data, double t);
+    void *progress_data;
 } qd_sim_opts;
 
 enum { QD_SIM_JIT_AUTO = 0, QD_SIM_JIT_ON = 1, QD_SIM_JIT_OFF = 2 };
@@ -270,7 +286,8 @@ enum { QD_SIM_JIT_AUTO = 0, QD_SIM_JIT_ON = 1, QD_SIM_JIT_OFF = 2 };
 /* Why a run stopped, as data (issue 31): the code, the time and the
  * quantity that decided it; qd_stop_str renders the code in English, and
  * the context's message says the rest (the cause, what to change).
- * value: the step h for QD_STOP_STEP_UNDERFLOW and QD_STOP_NO_CONVERGENCE,
+ * value: the step h for QD_STOP_STEP_UNDERFLOW, QD_STOP_STEP_COLLAPSE and
+ * QD_STOP_NO_CONVERGENCE,
  * the residual for QD_STOP_PROJECTION, the offending number (inf, NaN or the
  * energy) for QD_STOP_NONFINITE, the step limit for QD_STOP_STEP_LIMIT, the
  * event's index (in the order added) for QD_STOP_EVENT, the impact's for
@@ -290,6 +307,8 @@ typedef enum qd_stop_code {
     QD_STOP_PROJECTION,      /* the projection onto the constraints failed */
     QD_STOP_NONFINITE,       /* a state, energy, input or output not finite */
     QD_STOP_PAINLEVE,        /* friction: no or several consistent stick/slip modes */
+    QD_STOP_STEP_COLLAPSE,   /* the adaptive step shrank so far that max_steps cannot reach
+                              * t_end at its pace (a singular point: it crawls, not underflows) */
     QD_STOP_FAILURE          /* another failure: the status and message say which */
 } qd_stop_code;
 
@@ -358,6 +377,9 @@ typedef struct qd_sim_stats {
      * (Euclidean; the velocities 0 for a system in speeds), so that a
      * caller can say so when it is not small (the CLI prints a note). */
     double initial_moved_q, initial_moved_qd;
+    /* With qd0_given: how many velocities not given were solved from the
+     * constraints (changed by the start); which: qd_sim_initial_solved. */
+    size_t initial_solved;
     /* Event functions that oscillate faster than the event search resolves
      * (docs/design.md, "Events"): the steps where one turned at consecutive
      * samples of the finest sampling (64 per step), the first such step's
@@ -378,6 +400,10 @@ typedef struct qd_sim_stats {
  * holonomic one and its velocity form, |A q' + a0| for a Pfaffian one; 0 for
  * c out of range.  stats.constraint_error_max is the largest of these. */
 QD_API double qd_sim_constraint_error(const qd_sim *s, size_t c);
+/* Whether velocity j (the equations' order) was solved from the velocity
+ * constraints at the start of the last run, which kept the velocities
+ * given (qd_sim_opts.qd0_given); false for j out of range. */
+QD_API bool qd_sim_initial_solved(const qd_sim *s, size_t j);
 
 /* The columns of a run with method: t, the coordinates, the speeds (a
  * system in speeds), the velocities (name'), the momenta (p_name,
@@ -495,7 +521,7 @@ typedef struct qd_sim_report {
 /* The machine name of a stop code, for programs: "none", "end", "event",
  * "contact", "callback", "refused", "step_underflow", "no_convergence",
  * "solver_failure", "step_limit", "singular", "projection", "nonfinite",
- * "painleve", "failure" (the QD_STOP_ names in lower case); "unknown"
+ * "painleve", "step_collapse", "failure" (the QD_STOP_ names in lower case); "unknown"
  * outside the enum.  qd_stop_str is the English for a reader. */
 QD_API const char *qd_stop_name(qd_stop_code code);
 /* The stop record as one JSON object (the value of a "stop" key, or an

@@ -25,6 +25,7 @@ from .relativity import lorentz, proper_time, collide
 from .forms import (Homogeneity, Periods, QuadraticForm, homogeneity, periods, quadratic_form,
                     tour)
 from .field import Field
+from .appendix import GramSchmidt, gram_schmidt
 from .kernel import Expr, Code, parse, diff, expand, simplify, print_expr
 from ._progress import set_progress
 
@@ -33,5 +34,6 @@ __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "O
            "Mode", "Modes", "Result", "Table", "Rhs", "Animation", "StateSpace", "Lqr", "lqr",
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Homogeneity",
            "homogeneity", "Periods", "periods", "tour", "Field",
-           "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr", "set_progress"]
+           "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr", "set_progress",
+           "GramSchmidt", "gram_schmidt"]
 from ._lib import VERSION as __version__

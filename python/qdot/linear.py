@@ -191,23 +191,23 @@ def speeds_modes(core, about, scan_=None, steps=None):
         p.free()
 
 
-def equilibria(core, near=None, box=None):
-    """qd_equilibria_find_text from near and box; an Equilibria."""
+def equilibria(core, guess=None, box=None):
+    """qd_equilibria_find_text from guess and box; an Equilibria."""
     from .model import Equilibria
     if lib.qd_model_nspeeds(core.model):
-        _refuse("equilibria", near=near, box=box)
+        _refuse("equilibria", guess=guess, box=box)
         return speeds_equilibria(core)
     p = Point(core)
     out = new("qd_equilibria")
     where = ffi.new("const char **")
-    texts = {"near": _commands.text_arg(_point_text(near, "near"), "near"),
+    texts = {"guess": _commands.text_arg(_point_text(guess, "guess"), "guess"),
              "box": _commands.text_arg(_range_text(box), "box")}
     c = {k: v if v is not None else ffi.NULL for k, v in texts.items()}
     try:
-        st = lib.qd_equilibria_find_text(core.ctx, p.pt, c["near"], c["box"], out, where)
+        st = lib.qd_equilibria_find_text(core.ctx, p.pt, c["guess"], c["box"], out, where)
         if st != lib.QD_OK:
             if where[0] != ffi.NULL:
-                which = "near" if where[0] == c["near"] else "box"
+                which = "guess" if where[0] == c["guess"] else "box"
                 raise located(core, which, ffi.string(texts[which]))
             raise core.error(st, cls=NumericalError if st == QD_ERR_NUMERIC else None)
         found = Equilibria(equilibrium(core, p.names, out.pts[k]) for k in range(out.count))

@@ -1137,21 +1137,29 @@ class Model:
         return _commands.output(core, "check", lambda buf: lib.qd_render_check(
             core.ctx, core.model, core.eom_ptr(), o, v, lib.QD_RENDER_JSON, buf))
 
-    def equilibria(self, near=None, box=None):
+    def equilibria(self, guess=None, box=None, *, near=None):
         """Every equilibrium found (an Equilibria: a list of Equilibrium,
         sorted by q), as `qdot equilibria` finds them (qd_equilibria_find_text
         on the equations with the holonomic constraints eliminated): exact
         where the equations solve in closed form, else by a multi-start
-        Newton search over the default box.  near ({coordinate: value} or
-        "q1=VALUE, ..."; an Equilibrium): Newton from there only, as --near;
+        Newton search over the default box.  guess ({coordinate: value} or
+        "q1=VALUE, ..."; an Equilibrium): Newton from there only, as --guess
+        (near= is its old name, still taken with a DeprecationWarning);
         box ({coordinate: (low, high)} or "q1=LOW:HIGH, ..."): the numeric
         search there, as --box.  Its other attributes are the keys of `qdot
         equilibria --format json` (qd_equilibria_print): method, exact,
         continuum, equilibria (each with equilibrium, exact, kind,
         hessian_signs, symmetric, residual); .json is that dict."""
+        if near is not None:
+            import warnings
+            warnings.warn("equilibria(near=) is now equilibria(guess=): the starting point of a "
+                          "search, as in stability and path", DeprecationWarning, stacklevel=2)
+            if guess is not None:
+                raise TypeError("equilibria: give guess, not both guess and near")
+            guess = near
         core = self._for("equilibria")
         with _progress.watch(core, "equilibria"):  # the multistart's steps, Ctrl-C
-            return _linear.equilibria(core, near, box)
+            return _linear.equilibria(core, guess, box)
 
     def modes(self, about=None, at_equilibrium=None, initial=None, symmetry=False,
               independent=None, scan=None, steps=None):

@@ -416,9 +416,17 @@ def _run(core, s, opts, nev, fns=()):
                 failed.append(err)
                 return -1
 
+        def step(_data, t):
+            # after every step: the bar and ^C between rows far apart (an
+            # output grid dt, a step crawling near a singular point)
+            run.update((t - t0) / span if span > 0 else 1.0, t)
+            return 1 if run.stop else 0
+
         stats = new("qd_sim_stats")
         final = doubles([0.0] * ncol)
         callback = ffi.callback("qd_sim_sink", sink, error=-1)  # alive until qd_sim_run returns
+        step_c = ffi.callback("int(void *, double)", step, error=1)
+        opts.progress = step_c
         wall = time.perf_counter()
         st = lib.qd_sim_run(s, opts, callback, ffi.NULL, stats, final)
         wall = time.perf_counter() - wall

@@ -103,19 +103,23 @@ def test_modes_symmetry_none_is_a_warning(dp):
     assert "symmetry" not in modes.json
 
 
-def test_equilibria_near_and_box_as_the_cli(dp):
-    near = dp.equilibria(near={"theta1": 3, "theta2": 0.2})
+def test_equilibria_guess_and_box_as_the_cli(dp):
+    near = dp.equilibria(guess={"theta1": 3, "theta2": 0.2})
     # Newton from near the (pi, 0) saddle reaches it
     assert near.method == "newton" and len(near) == 1
     assert near[0].q["theta1"] == pytest.approx(math.pi, rel=1e-12)
     assert abs(near[0].q["theta2"]) < 1e-12 and near[0].kind == "saddle"
-    same(near.json, cli("equilibria", DP, "--near", "theta1=3, theta2=0.2"))
+    same(near.json, cli("equilibria", DP, "--guess", "theta1=3, theta2=0.2"))
+    # the old name of the same thing still works, with a warning (issue 31)
+    with pytest.warns(DeprecationWarning, match="guess"):
+        old = dp.equilibria(near={"theta1": 3, "theta2": 0.2})
+    same(old.json, near.json)
     box = dp.equilibria(box={"theta1": (-1, 1), "theta2": "-1:1"})
     assert box.method == "multistart" and [e.kind for e in box] == ["minimum"]
     same(box.json, cli("equilibria", DP, "--box", "theta1=-1:1, theta2=-1:1"))
     with pytest.raises(qdot.ModelError, match="unknown name 'thetaa'") as err:
-        dp.equilibria(near="theta1=0.1, thetaa=2")
-    assert (err.value.file, err.value.col) == ("near", 13)
+        dp.equilibria(guess="theta1=0.1, thetaa=2")
+    assert (err.value.file, err.value.col) == ("guess", 13)
     with pytest.raises(TypeError):
         dp.equilibria(box={"theta1": 3})
 
@@ -150,8 +154,8 @@ def test_speeds_equilibria_of_the_rolling_disk():
     assert [e.exact["q2"] for e in eqs] == ["0", "pi"] and eqs.free == ["x", "y", "q1", "q3"]
     assert all(e.kind is None and e.residual < 1e-12 for e in eqs)
     same(eqs.json, cli("equilibria", DISK))
-    with pytest.raises(ValueError, match="near is not available"):
-        qdot.Model.load(DISK).equilibria(near="q2=0.1")
+    with pytest.raises(ValueError, match="guess is not available"):
+        qdot.Model.load(DISK).equilibria(guess="q2=0.1")
 
 
 def test_constrained_modes_on_the_manifold():

@@ -36,13 +36,14 @@ typedef struct cl_work {
     const qd_expr **in;
     double *val;                 /* nin */
     size_t *hol;                 /* nh: the holonomic constraints' indices */
-    qd_tangent *dyn, *con;       /* (M, f, A, b) and C */
+    qd_tangent *dyn, *con, *out; /* (M, f, A, b), C and the outputs h (NULL: none) */
     double *C, *Cz;              /* d, d * (2n + nu) */
 } cl_work;
 
 static void work_free(cl_work *w) {
     qd_tangent_free(w->dyn);
     qd_tangent_free(w->con);
+    qd_tangent_free(w->out);
     qd__free(w->in);
     qd__free(w->val);
     qd__free(w->hol);
@@ -117,6 +118,13 @@ static qd_status make_tangents(cl_work *w) {
         out[k++] = e->b[i];
     if (st == QD_OK && !(w->dyn = qd_tangent_new(w->ctx, w->nin, w->in, vary, k, out)))
         st = qd_ctx_status(w->ctx);
+    size_t ny = qd_model_noutputs(w->m);
+    const qd_expr **h = ny && st == QD_OK ? qd__calloc(w->ctx, ny + 1, sizeof *h) : NULL;
+    for (size_t i = 0; h && i < ny; i++)
+        h[i] = qd_model_output(w->m, i);
+    if (ny && st == QD_OK && (!h || !(w->out = qd_tangent_new(w->ctx, w->nin, w->in, vary, ny, h))))
+        st = h ? qd_ctx_status(w->ctx) : QD_ERR_NOMEM;
+    qd__free(h);
     w->C = qd__calloc(w->ctx, w->d + 1, sizeof *w->C);
     w->Cz = qd__calloc(w->ctx, w->d * nv + 1, sizeof *w->Cz);
     if (st == QD_OK && (!w->C || !w->Cz))
@@ -393,10 +401,41 @@ static qd_status newton(cl_work *w, const size_t *dep, double *moved, double *re
     return st;
 }
 
+/* The caller's choice failed at the point: the error says which states
+ * the library would take there ("e.g. independent x, x'"), from the
+ * point as given. */
+static void suggest(cl_work *w, const double *given) {
+    size_t d = w->d, n = w->n;
+    size_t *dep = qd__calloc(w->ctx, d + 1, sizeof *dep);
+    char why[512];
+    snprintf(why, sizeof why, "%s", qd_ctx_message(w->ctx));
+    memcpy(w->val, given, 2 * n * sizeof *w->val);
+    qd_status st = dep ? con_eval(w) : QD_ERR_NOMEM;
+    qd_ctx_clear_error(w->ctx);
+    if (st == QD_OK && choose(w, dep, false) == QD_OK) {
+        qd_buf b = QD_BUF_INIT;
+        char nm[160];
+        for (size_t k = 0, dd = 0, i = 0; k < 2 * n; k++) {
+            if (dd < d && dep[dd] == k)
+                dd++;
+            else
+                qd_buf_printf(&b, "%s%s", i++ ? ", " : "", state_name(w, k, nm, sizeof nm));
+        }
+        qd_ctx_clear_error(w->ctx);
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "%s; e.g. --independent \"%s\"", why,
+                     b.failed ? "..." : qd_buf_str(&b));
+        qd_buf_free(&b);
+    } else {
+        qd_ctx_clear_error(w->ctx);
+        qd_ctx_error(w->ctx, QD_ERR_ARG, "%s", why);
+    }
+    qd__free(dep);
+}
+
 /* ---- the Jacobians ------------------------------------------------------------- */
 
 /* dF/d(z, u) (2n rows, nv = 2n + nu columns) at the point, and q'' there. */
-static qd_status flow_jacobian(cl_work *w, double *dF, double *g) {
+static qd_status flow_jacobian(cl_work *w, double *dF, double *g, double *lambda) {
     size_t n = w->n, nc = w->nc, nv = 2 * n + w->nu, s = n + nc;
     size_t nout = qd_tangent_nout(w->dyn);
     double *y = qd__calloc(w->ctx, nout + nout * nv + s * s + s * (nv + 1) + 1, sizeof *y);
@@ -459,6 +498,8 @@ static qd_status flow_jacobian(cl_work *w, double *dF, double *g) {
     }
     if (st == QD_OK)
         dgesv_(&si, &nrhs, K, &si, piv, R, &si, &info);
+    for (size_t c = 0; st == QD_OK && c < nc; c++)
+        lambda[c] = X[n + c];
     for (size_t i = 0; st == QD_OK && i < n; i++) {
         g[i] = X[i];
         for (size_t k = 0; k < nv; k++) {
@@ -627,6 +668,8 @@ void qd_conlin_free(qd_conlin *c) {
     qd__free(c->zsym);
     qd__free(c->ignorable);
     qd__free(c->core_re);
+    qd__free(c->lambda);
+    qd__free(c->lambda_sym);
     qd_statespace_free(&c->ss);
     memset(c, 0, sizeof *c);
 }
@@ -655,8 +698,12 @@ static qd_status setup(cl_work *w, const qd_eom *e, const qd_model *m, const qd_
     c->z = qd__calloc(w->ctx, 4 * n + 1, sizeof *c->z);
     c->ignorable = qd__calloc(w->ctx, c->nx + 1, sizeof *c->ignorable);
     c->zsym = qd__calloc(w->ctx, 2 * n + 1, sizeof *c->zsym);
-    if (!c->indep || !c->z || !c->ignorable || !c->zsym)
+    c->lambda = qd__calloc(w->ctx, w->nc + 1, sizeof *c->lambda);
+    c->lambda_sym = qd__calloc(w->ctx, w->nc + 1, sizeof *c->lambda_sym);
+    if (!c->indep || !c->z || !c->ignorable || !c->zsym || !c->lambda || !c->lambda_sym)
         return QD_ERR_NOMEM;
+    for (size_t k = 0; k < w->nc; k++)
+        c->lambda_sym[k] = e->con[k].lambda;
     for (size_t j = 0; j < n; j++) {
         c->zsym[j] = e->q[j];
         c->zsym[n + j] = e->qd[j];
@@ -667,22 +714,46 @@ static qd_status setup(cl_work *w, const qd_eom *e, const qd_model *m, const qd_
     return st == QD_OK ? make_tangents(w) : st;
 }
 
-/* The states' symbols and the numbers of A, B, x' into c->ss. */
+/* The outputs' rows: C = (dh/dz) T, D = dh/du and y at the point. */
+static qd_status fill_outputs(cl_work *w, qd_statespace *s, const double *T) {
+    size_t n = w->n, nx = s->nx, nu = w->nu, ny = s->ny, nv = 2 * n + nu;
+    if (!ny)
+        return QD_OK;
+    double *J = qd__calloc(w->ctx, ny * nv + 1, sizeof *J);
+    qd_status st = J ? qd_tangent_jacobian(w->ctx, w->out, w->val, s->y0, J) : QD_ERR_NOMEM;
+    for (size_t i = 0; st == QD_OK && i < ny; i++) {
+        for (size_t j = 0; j < nx; j++) {
+            double a = 0;
+            for (size_t r = 0; r < 2 * n; r++)
+                a += J[i * nv + r] * T[r * nx + j];
+            s->C[i * nx + j] = a;
+        }
+        for (size_t u = 0; u < nu; u++)
+            s->D[i * nu + u] = J[i * nv + 2 * n + u];
+    }
+    qd__free(J);
+    return st;
+}
+
+/* The states' symbols and the numbers of A, B, C, D, x' and y into c->ss
+ * (one block, as qd_statespace_free frees it). */
 static qd_status fill_ss(cl_work *w, const qd_model *m, qd_conlin *c, const double *dF,
                          const double *g, const double *T) {
-    size_t n = w->n, nx = c->nx, nu = w->nu, nv = 2 * n + nu;
+    size_t n = w->n, nx = c->nx, nu = w->nu, nv = 2 * n + nu, ny = qd_model_noutputs(m);
     qd_statespace *s = &c->ss;
     s->nx = nx;
     s->nu = nu;
+    s->ny = ny;
     s->states = qd__calloc(w->ctx, nx + nu + 1, sizeof *s->states);
-    s->outputs = qd__calloc(w->ctx, 1, sizeof *s->outputs);
-    s->A = qd__calloc(w->ctx, nx * nx + nx * nu + 2 * nx + 1, sizeof *s->A);
+    s->outputs = qd__calloc(w->ctx, ny + 1, sizeof *s->outputs);
+    s->A = qd__calloc(w->ctx, nx * nx + nx * nu + ny * (nx + nu) + nx + ny + 1, sizeof *s->A);
     if (!s->states || !s->outputs || !s->A)
         return QD_ERR_NOMEM;
     s->inputs = s->states + nx;
     s->B = s->A + nx * nx;
-    s->C = s->D = s->B + nx * nu;
-    s->xdot0 = s->C;
+    s->C = s->B + nx * nu;
+    s->D = s->C + ny * nx;
+    s->xdot0 = s->D + ny * nu;
     s->y0 = s->xdot0 + nx;
     for (size_t i = 0; i < nx; i++) {
         size_t k = c->indep[i];
@@ -700,7 +771,27 @@ static qd_status fill_ss(cl_work *w, const qd_model *m, qd_conlin *c, const doub
     }
     for (size_t u = 0; u < nu; u++)
         s->inputs[u] = qd_model_input(m, u);
-    return QD_OK;
+    for (size_t i = 0; i < ny; i++)
+        s->outputs[i] = qd_model_output_name(m, i);
+    return fill_outputs(w, s, T);
+}
+
+/* The verdict from the core: unstable above the tolerance (qdot/conlin.h). */
+static void judge(qd_conlin *c) {
+    double big = 1;
+    for (size_t k = 0; k < c->ncore; k++)
+        big = fmax(big, hypot(c->core_re[k], c->core_im[k]));
+    c->tol = QD_CONLIN_MARGIN_TOL * big;
+    c->margin = c->ncore ? c->core_re[0] : -INFINITY;
+    double scale = 1, moving = 0;
+    for (size_t k = 0; k < 2 * c->n; k++)
+        scale = fmax(scale, fabs(c->z[k]));
+    for (size_t i = 0; i < c->nx; i++)
+        if (!c->ignorable[i])
+            moving = fmax(moving, fabs(c->ss.xdot0[i]));
+    c->steady = moving <= 1e-9 * scale;
+    c->stable = c->steady && c->margin <= c->tol;
+    c->marginal = c->stable && c->margin >= -c->tol;
 }
 
 qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const qd_linpoint *pt,
@@ -715,11 +806,6 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
     if (!e->ncon) {
         qd_ctx_error(ctx, QD_ERR_UNSUPPORTED, "the equations keep no constraints: linearize "
                      "them as they are (qd_linearize)");
-        return QD_ERR_UNSUPPORTED;
-    }
-    if (qd_model_noutputs(m)) {
-        qd_ctx_error(ctx, QD_ERR_UNSUPPORTED, "outputs (C and D) on a constraint manifold are "
-                     "not done yet: remove the `outputs` statement");
         return QD_ERR_UNSUPPORTED;
     }
     cl_work w = {.ctx = ctx};
@@ -737,6 +823,8 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
         out->given[k] = w.val[k];
     if (st == QD_OK)
         st = newton(&w, out->dep, &out->moved, &out->residual);
+    if (st == QD_ERR_ARG && independent)
+        suggest(&w, out->given);
     for (size_t k = 0, i = 0, dd = 0; st == QD_OK && k < 2 * n; k++) {
         if (dd < w.d && out->dep[dd] == k)
             dd++;
@@ -745,7 +833,7 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
     }
     if (st == QD_OK) {
         dF = qd__calloc(ctx, 2 * n * nv + n + 2 * n * nx + 1, sizeof *dF);
-        st = dF ? flow_jacobian(&w, dF, g = dF + 2 * n * nv) : QD_ERR_NOMEM;
+        st = dF ? flow_jacobian(&w, dF, g = dF + 2 * n * nv, out->lambda) : QD_ERR_NOMEM;
         T = dF ? g + n : NULL;
     }
     if (st == QD_OK)
@@ -760,8 +848,10 @@ qd_status qd_conlin_about(qd_ctx *ctx, const qd_eom *e, const qd_model *m, const
     }
     if (st == QD_OK)
         st = core_eigen(ctx, out);
-    if (st == QD_OK)
+    if (st == QD_OK) {
         zero_ignorable(out);
+        judge(out);
+    }
     if (st == QD_ERR_NOMEM && qd_ctx_status(ctx) == QD_OK)
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory linearizing on the constraint manifold");
     qd__free(dF);
@@ -808,20 +898,30 @@ qd_status qd_conlin_keep_core(qd_ctx *ctx, qd_conlin *c) {
     if (!ctx || !c || !c->ss.A)
         return QD_ERR_ARG;
     const qd_statespace *o = &c->ss;
-    size_t m = c->ncore, nu = o->nu, nx = o->nx;
-    qd_statespace s = {.nx = m, .nu = nu};
+    size_t m = c->ncore, nu = o->nu, nx = o->nx, ny = o->ny;
+    qd_statespace s = {.nx = m, .nu = nu, .ny = ny};
     s.states = qd__calloc(ctx, m + nu + 1, sizeof *s.states);
-    s.outputs = qd__calloc(ctx, 1, sizeof *s.outputs);
-    s.A = qd__calloc(ctx, m * m + m * nu + 2 * m + 1, sizeof *s.A);
+    s.outputs = qd__calloc(ctx, ny + 1, sizeof *s.outputs);
+    s.A = qd__calloc(ctx, m * m + m * nu + ny * (m + nu) + m + ny + 1, sizeof *s.A);
     if (!s.states || !s.outputs || !s.A) {
         qd_statespace_free(&s);
         return QD_ERR_NOMEM;
     }
     s.inputs = s.states + m;
     s.B = s.A + m * m;
-    s.C = s.D = s.B + m * nu;
-    s.xdot0 = s.C;
+    s.C = s.B + m * nu;
+    s.D = s.C + ny * m;
+    s.xdot0 = s.D + ny * nu;
     s.y0 = s.xdot0 + m;
+    for (size_t i = 0; i < ny; i++) { /* the ignorable states' columns of C left out */
+        s.outputs[i] = o->outputs[i];
+        s.y0[i] = o->y0[i];
+        for (size_t j = 0, k = 0; j < nx; j++)
+            if (!c->ignorable[j])
+                s.C[i * m + k++] = o->C[i * nx + j];
+        for (size_t u = 0; u < nu; u++)
+            s.D[i * nu + u] = o->D[i * nu + u];
+    }
     for (size_t i = 0, r = 0; i < nx; i++) {
         if (c->ignorable[i])
             continue;

@@ -32,9 +32,9 @@ static void names_text(qd_buf *b, const qd_conlin *c, const size_t *idx, size_t 
 
 static void text(qd_buf *b, const qd_conlin *c) {
     size_t d = c->nhol + c->ncon;
-    qd_buf_printf(b, "on the constraint manifold (%zu coordinates, %zu constraints, %zu of them "
-                  "holonomic): %zu independent states\nindependent: ",
-                  c->n, c->ncon, c->nhol, c->nx);
+    qd_buf_printf(b, "on the constraint manifold (%zu coordinates, %zu constraint%s, %zu of "
+                  "them holonomic): %zu independent states\nindependent: ",
+                  c->n, c->ncon, c->ncon == 1 ? "" : "s", c->nhol, c->nx);
     names_text(b, c, c->indep, c->nx);
     qd_buf_puts(b, "\ndependent: ");
     names_text(b, c, c->dep, d);
@@ -69,6 +69,39 @@ static void text(qd_buf *b, const qd_conlin *c) {
         put_eig(b, c->core_re[k], c->core_im[k]);
     }
     qd_buf_puts(b, c->ncore ? "\n" : " none\n");
+    for (size_t k = 0; k < c->ncon; k++) {
+        char v[QD_DOUBLE_MAX];
+        qd_double_format(v, c->lambda[k] == 0 ? 0 : c->lambda[k]);
+        qd_buf_printf(b, "%s%s = %s", k ? ", " : "multipliers: ", qd_expr_name(c->lambda_sym[k]),
+                      v);
+    }
+    if (c->ncon)
+        qd_buf_puts(b, "\n");
+}
+
+static const char *verdict(const qd_conlin *c) {
+    return !c->steady ? "not steady" : !c->stable ? "unstable"
+           : c->marginal ? "marginally stable" : "stable";
+}
+
+/* The verdict line of the text: the core decides (qdot/conlin.h). */
+static void verdict_text(qd_buf *b, const qd_conlin *c) {
+    char v[QD_DOUBLE_MAX];
+    qd_double_format(v, c->margin == 0 ? 0 : c->margin);
+    if (!c->steady)
+        qd_buf_puts(b, "verdict: none (not a steady motion: the states not ignorable move, "
+                       "x' != 0 there)\n");
+    else if (!c->ncore)
+        qd_buf_puts(b, "verdict: marginally stable (every state ignorable: only zero "
+                       "eigenvalues)\n");
+    else if (!c->stable)
+        qd_buf_printf(b, "verdict: unstable (the core's largest Re s is %s)\n", v);
+    else if (c->marginal)
+        qd_buf_printf(b, "verdict: marginally stable (the core's largest Re s is 0 to %.3g: "
+                      "eigenvalues on the imaginary axis, which the linearization does not "
+                      "decide)\n", c->tol);
+    else
+        qd_buf_printf(b, "verdict: stable (the core's largest Re s is %s)\n", v);
 }
 
 static void names_json(qd_json *j, const char *key, const qd_conlin *c, const size_t *idx,
@@ -102,6 +135,22 @@ static void json(qd_json *j, const qd_conlin *c) {
         qd_json_end_array(j);
     }
     qd_json_end_array(j);
+    qd_json_key(j, "multipliers");
+    qd_json_begin_object(j);
+    for (size_t k = 0; k < c->ncon; k++) {
+        qd_json_key(j, qd_expr_name(c->lambda_sym[k]));
+        qd_json_number(j, c->lambda[k]);
+    }
+    qd_json_end_object(j);
+    qd_json_key(j, "stable");
+    if (c->steady)
+        qd_json_bool(j, c->stable);
+    else
+        qd_json_null(j);
+    qd_json_key(j, "marginal");
+    qd_json_bool(j, c->marginal);
+    qd_json_key(j, "verdict");
+    qd_json_string(j, verdict(c));
 }
 
 qd_status qd_conlin_print(const qd_conlin *c, bool as_json, qd_buf *out) {
@@ -247,12 +296,16 @@ qd_status qd_conlin_render(qd_ctx *ctx, const qd_conlin *c, const struct qd_care
             size_t nl = strlen(nb);
             while (nl && nb[nl - 1] != '}')
                 nl--;
-            qd_buf_putn(out, nb, nl ? nl - 1 : 0);
-            qd_buf_puts(out, ", ");
+            for (nl = nl ? nl - 1 : 0; nl && (nb[nl - 1] == '\n' || nb[nl - 1] == ' ');)
+                nl--;
+            qd_buf_putn(out, nb, nl);
+            qd_buf_puts(out, ",");
             qd_buf_puts(out, f[0] == '{' ? f + 1 : f);
         } else {
             qd_buf_puts(out, qd_buf_str(&notes));
             qd_buf_puts(out, f);
+            if (fmt == QD_SS_TEXT)
+                verdict_text(out, c);
         }
         if (out->failed)
             st = QD_ERR_NOMEM;
@@ -261,6 +314,58 @@ qd_status qd_conlin_render(qd_ctx *ctx, const qd_conlin *c, const struct qd_care
         qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory printing the state-space form");
     qd_buf_free(&notes);
     qd_buf_free(&form);
+    return st;
+}
+
+qd_status qd_conlin_modes_print(qd_ctx *ctx, const qd_conlin *c, bool as_json, qd_buf *out) {
+    if (!ctx || !c || !out)
+        return QD_ERR_ARG;
+    qd_buf b = QD_BUF_INIT;
+    const qd_statespace *s = &c->ss;
+    bool ok = true;
+    if (as_json) {
+        qd_json j;
+        qd_json_init(&j, &b);
+        qd_json_begin_object(&j);
+        json(&j, c);
+        qd_json_key(&j, "states");
+        qd_json_begin_array(&j);
+        for (size_t i = 0; i < s->nx; i++)
+            qd_json_string(&j, qd_expr_name(s->states[i]));
+        qd_json_end_array(&j);
+        qd_json_key(&j, "eigenvalues");
+        qd_json_begin_array(&j);
+        for (size_t k = 0; k < s->nx; k++) {
+            qd_json_begin_array(&j);
+            qd_json_number(&j, s->eig_re[k]);
+            qd_json_number(&j, s->eig_im[k]);
+            qd_json_end_array(&j);
+        }
+        qd_json_end_array(&j);
+        qd_json_end_object(&j);
+        qd_buf_puts(&b, "\n");
+        ok = qd_json_ok(&j);
+    } else {
+        text(&b, c);
+        qd_buf_puts(&b, "eigenvalues of A (every state):\n");
+        for (size_t k = 0; k < s->nx; k++) {
+            qd_buf_puts(&b, "  s = ");
+            put_eig(&b, s->eig_re[k], s->eig_im[k]);
+            if (s->eig_im[k] > 0)
+                qd_buf_printf(&b, "  (w = %.10g rad/s)", s->eig_im[k]);
+            qd_buf_puts(&b, "\n");
+        }
+        verdict_text(&b, c);
+    }
+    qd_status st = !ok ? QD_ERR_NUMERIC : b.failed ? QD_ERR_NOMEM : QD_OK;
+    if (st == QD_OK)
+        qd_buf_puts(out, qd_buf_str(&b));
+    if (st == QD_OK && out->failed)
+        st = QD_ERR_NOMEM;
+    if (st != QD_OK)
+        qd_ctx_error(ctx, st, st == QD_ERR_NOMEM ? "out of memory printing the modes"
+                                                 : "a number of the modes JSON cannot hold");
+    qd_buf_free(&b);
     return st;
 }
 

@@ -33,36 +33,65 @@ const char *qd_eq_kind_name(qd_eq_kind k) {
 
 /* ---- which coordinates are angles ------------------------------------------ */
 
-static void mark_angles(const qd_expr *x, const qd_eom *e, bool *angle, qd__ptrmap *seen) {
-    if (!x || qd__ptrmap_has(seen, x))
+/* A coordinate is an angle when the equations are 2 pi-periodic in it:
+ * it appears inside sin, cos or tan, and only there, each time as
+ * k q + (terms free of q) with k a nonzero integer (d(arg)/dq = k).  Both
+ * conditions matter: the box, the folding of roots into (-pi, pi] and the
+ * merging of roots 2 pi apart are right only then.  A chain of pendulums
+ * with springs on the angle differences, V = -g cos th_i + k/2 (th_{i+1} -
+ * th_i)^2, is not periodic in any th_i: folded, its roots were listed with
+ * residuals 2 pi k (issue 33). */
+typedef struct angle_walk {
+    qd_ctx *ctx;
+    const qd_eom *e;
+    bool *in_trig, *bare; /* per coordinate: inside a trig function; anywhere else */
+    qd__ptrmap seen;
+} angle_walk;
+
+static void mark_angles(angle_walk *w, const qd_expr *x) {
+    if (!x || qd__ptrmap_has(&w->seen, x))
         return;
-    qd__ptrmap_put(seen, x, (void *)x);
+    qd__ptrmap_put(&w->seen, x, (void *)x);
+    const qd_eom *e = w->e;
     if (qd_expr_kind(x) == QD_FUNC &&
         (qd_expr_func(x) == QD_SIN || qd_expr_func(x) == QD_COS || qd_expr_func(x) == QD_TAN)) {
+        const qd_expr *arg = qd_expr_arg(x, 0);
         for (size_t j = 0; j < e->n; j++)
-            if (qd_has(qd_expr_arg(x, 0), e->q[j]))
-                angle[j] = true;
+            if (qd_has(arg, e->q[j])) {
+                const qd_expr *k = qd_diff(w->ctx, arg, e->q[j]);
+                w->in_trig[j] = true;
+                if (!k || !qd_is_integer(k) || qd_is_zero(k))
+                    w->bare[j] = true; /* sin(q^2), cos(q/2), sin(q*t): not 2 pi-periodic */
+            }
         return;
     }
+    for (size_t j = 0; j < e->n; j++)
+        if (x == e->q[j])
+            w->bare[j] = true;
     for (size_t i = 0; i < qd_expr_nargs(x); i++)
-        mark_angles(qd_expr_arg(x, i), e, angle, seen);
+        mark_angles(w, qd_expr_arg(x, i));
 }
 
 qd_status qd_equilibria_default_box(qd_ctx *ctx, const qd_eom *e, const qd_model *m, bool *angle,
                                     double *lo, double *hi) {
     QD_ARGS_CTX(ctx, ctx && e && m && angle && lo && hi);
-    (void)ctx;
-    qd__ptrmap seen = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
+    bool *flags = qd__calloc(ctx, 2 * e->n + 1, sizeof *flags);
+    if (!flags)
+        return QD_ERR_NOMEM;
+    angle_walk w = {ctx, e, flags, flags + e->n, QD_PTRMAP_AL(qd__ctx_allocator(ctx))};
     for (size_t j = 0; j < e->n; j++)
-        angle[j] = false;
-    for (size_t j = 0; j < e->n; j++)
-        mark_angles(e->f[j], e, angle, &seen);
-    mark_angles(e->L, e, angle, &seen);
+        mark_angles(&w, e->f[j]);
+    mark_angles(&w, e->L);
     if (m) {
-        mark_angles(qd_model_kinetic(m), e, angle, &seen);
-        mark_angles(qd_model_potential(m), e, angle, &seen);
+        mark_angles(&w, qd_model_kinetic(m));
+        mark_angles(&w, qd_model_potential(m));
     }
-    qd__ptrmap_free(&seen);
+    qd__ptrmap_free(&w.seen);
+    for (size_t j = 0; j < e->n; j++)
+        angle[j] = w.in_trig[j] && !w.bare[j];
+    qd__free(flags);
+    if (qd_ctx_status(ctx) == QD_ERR_NOMEM)
+        return QD_ERR_NOMEM;
     for (size_t j = 0; lo && hi && j < e->n; j++) {
         lo[j] = angle[j] ? -PI : -10;
         hi[j] = angle[j] ? PI : 10;

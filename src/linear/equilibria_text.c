@@ -1,6 +1,6 @@
 /*
  * src/linear/equilibria_text.c - the search `qdot equilibria` makes from
- * its options' text (qd_equilibria_find_text, qdot/equilibria.h): --near
+ * its options' text (qd_equilibria_find_text, qdot/equilibria.h): --guess
  * and --box read against the equations' coordinates (qdot/linpoint.h), over
  * the default box, then qd_equilibria_find.  The command line and Python's
  * Model.equilibria both call it, so both search the same places.
@@ -32,7 +32,7 @@ static void arrays_free(box_arrays *a) {
     qd__free(a->angle);
 }
 
-qd_status qd_equilibria_find_text(qd_ctx *ctx, const qd_linpoint *p, const char *near,
+qd_status qd_equilibria_find_text(qd_ctx *ctx, const qd_linpoint *p, const char *guess,
                                   const char *box, qd_equilibria *out, const char **where) {
     QD_ARGS_CTX(ctx, ctx && p && p->e && p->m && out);
     memset(out, 0, sizeof *out);
@@ -40,13 +40,13 @@ qd_status qd_equilibria_find_text(qd_ctx *ctx, const qd_linpoint *p, const char 
         *where = NULL;
     box_arrays a = {0};
     qd_status st = arrays_new(ctx, p->e->n, &a);
-    qd_equilibria_opts o = {.near = near ? a.q : NULL, .lo = box ? a.lo : NULL,
+    qd_equilibria_opts o = {.near = guess ? a.q : NULL, .lo = box ? a.lo : NULL,
                             .hi = box ? a.hi : NULL, .numeric_only = box != NULL};
     if (st == QD_OK)
         st = qd_equilibria_default_box(ctx, p->e, p->m, a.angle, a.lo, a.hi);
-    if (st == QD_OK && near && (st = qd_linpoint_read_coords(ctx, p, near, a.q)) != QD_OK &&
+    if (st == QD_OK && guess && (st = qd_linpoint_read_coords(ctx, p, guess, a.q)) != QD_OK &&
         where)
-        *where = near;
+        *where = guess;
     if (st == QD_OK && box && (st = qd_linpoint_read_box(ctx, p, box, a.lo, a.hi)) != QD_OK &&
         where)
         *where = box;

@@ -34,10 +34,31 @@ void qd__lin_free(qd__lin *L);
 /* The springs and rods of pic (its np and rest set) into pic->links and
  * pic->pivot (modes_links.c): jac[(j*np + i)*3 + k] = d(position k of
  * particle i)/dq_j at the equilibrium, far (laid out alike) the positions
- * at q0 + size/1000 along q_j, K the n x n K0 (NULL: no springs), size the
- * configuration's, owner n to work in. */
+ * at q0 + H along q_j, H = size/1000, then (at 3 np n and 6 np n) at q0 - H
+ * and q0 + 2H, K the n x n stiffness the springs between
+ * particles make and Kw that of the springs to walls (NULL: no springs),
+ * size the configuration's, owner n to work in. */
 void qd__lin_modes_links(qd_modes_picture *pic, const double *jac, const double *far, size_t n,
-                         const double *K, double size, size_t *owner);
+                         const double *K, const double *Kw, double size, size_t *owner);
+
+/* V's terms that are not linear in the particles' positions (gravity and
+ * uniform forces left out; modes_terms.c): nt of them, term k's Hessian at
+ * q0 at K + k n^2, and centre[k] the particle it holds to the origin by
+ * their distance alone (a spring from there), or SIZE_MAX. */
+typedef struct qd__lin_springs {
+    size_t nt;
+    double *K;
+    size_t *centre;
+} qd__lin_springs;
+
+/* The terms of m's V at q0 (syms/vals as qd_linear_about takes them, jac
+ * as qd__lin_modes_links', size the configuration's).  QD_ERR_ARG for a
+ * model without V (L given) or with more terms than are looked at. */
+qd_status qd__lin_springs_find(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                               const qd_expr *const *syms, const double *vals, const double *q0,
+                               const double *jac, size_t np, double size,
+                               qd__lin_springs *out);
+void qd__lin_springs_free(qd__lin_springs *s);
 /* Set every input from syms/vals (the rest 0). */
 void qd__lin_bind(qd__lin *L, size_t nvals, const qd_expr *const *syms, const double *vals);
 /* Evaluate at q (n values; NULL keeps the bound ones): L->out then holds

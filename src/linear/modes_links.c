@@ -145,8 +145,70 @@ static void walls_along(qd_modes_picture *pic, const double *jac, size_t n, cons
     free(T);
 }
 
+static void cross(const double *u, const double *v, double *out) {
+    out[0] = u[1] * v[2] - u[2] * v[1];
+    out[1] = u[2] * v[0] - u[0] * v[2];
+    out[2] = u[0] * v[1] - u[1] * v[0];
+}
+
+static double dist3(const double *u, const double *v) {
+    return sqrt((u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]) +
+                (u[2] - v[2]) * (u[2] - v[2]));
+}
+
+/* The centre c of the circle through A, B, C; false when they are on a line. */
+static bool circumcentre(const double *A, const double *B, const double *C, double *c) {
+    double a[3], b[3], axb[3], w[3], num[3];
+    for (unsigned k = 0; k < 3; k++)
+        a[k] = B[k] - A[k], b[k] = C[k] - A[k];
+    cross(a, b, axb);
+    double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+    double d = axb[0] * axb[0] + axb[1] * axb[1] + axb[2] * axb[2];
+    if (!(d > 1e-12 * aa * bb))
+        return false;
+    for (unsigned k = 0; k < 3; k++)
+        w[k] = aa * b[k] - bb * a[k];
+    cross(w, axb, num);
+    for (unsigned k = 0; k < 3; k++)
+        c[k] = A[k] + num[k] / (2 * d);
+    return true;
+}
+
+/* Particle a swings about a fixed point other than the origin (the second
+ * of two pendulums hung side by side): the centre of the circle its own
+ * coordinate u moves it on (through q0 and q0 +- H), whose distance every
+ * coordinate's steps keep (to 1e-7: the centre is found from points H
+ * apart), checked at q0 + 2H too.  A pivot there, wall_axis 3. */
+static void pivot_elsewhere(qd_modes_picture *pic, const double *jac, const double *far, size_t n,
+                            const size_t *owner, size_t a, double size, double jmax) {
+    size_t np = pic->np, stride = 3 * np * n;
+    const double *ra = pic->rest + 3 * a;
+    for (size_t u = 0; u < n; u++) {
+        double c[3];
+        if (owner[u] != a ||
+            !circumcentre(ra, far + u * 3 * np + 3 * a, far + stride + u * 3 * np + 3 * a, c))
+            continue;
+        double R = dist3(ra, c), origin[3] = {0, 0, 0};
+        bool kept = R > 1e-6 * size && R < 1e3 * size && dist3(c, origin) > 1e-6 * size;
+        for (size_t v = 0; kept && v < n; v++) {
+            const double *d = jac + (v * np + a) * 3;
+            if (!(fabs(d[0]) + fabs(d[1]) + fabs(d[2]) > 1e-9 * jmax))
+                continue;
+            for (unsigned f = 0; f < 3; f++)
+                kept &= fabs(dist3(far + f * stride + v * 3 * np + 3 * a, c) - R) <= 1e-7 * R;
+        }
+        if (kept && pic->nwalls < QD_MODES_PLOT_MAXWALLS && pic->nlinks < QD_MODES_PLOT_MAXLINKS) {
+            memcpy(pic->wall + 3 * pic->nwalls, c, sizeof c);
+            pic->wall_axis[pic->nwalls] = 3;
+            pic->links[pic->nlinks++] = (qd_modes_link_of){a, np + 1 + pic->nwalls++,
+                                                           QD_MODES_ROD};
+        }
+        return;
+    }
+}
+
 void qd__lin_modes_links(qd_modes_picture *pic, const double *jac, const double *far, size_t n,
-                         const double *K, double size, size_t *owner) {
+                         const double *K, const double *Kw, double size, size_t *owner) {
     size_t np = pic->np;
     double jmax = 0, kmax = 0;
     for (size_t k = 0; k < 3 * np * n; k++)
@@ -160,7 +222,8 @@ void qd__lin_modes_links(qd_modes_picture *pic, const double *jac, const double 
         if (rigid(pic->rest, jac, far, n, np, a, np, size, jmax)) {
             pic->pivot = true;
             add_link(pic, np, a, QD_MODES_ROD);
-        }
+        } else
+            pivot_elsewhere(pic, jac, far, n, owner, a, size, jmax);
         for (size_t b = a + 1; b < np; b++) {
             if (rigid(pic->rest, jac, far, n, np, b, a, size, jmax))
                 add_link(pic, a, b, QD_MODES_ROD);
@@ -168,6 +231,6 @@ void qd__lin_modes_links(qd_modes_picture *pic, const double *jac, const double 
                 add_link(pic, a, b, QD_MODES_SPRING);
         }
     }
-    for (unsigned e = 0; K && kmax > 0 && e < 3; e++)
-        walls_along(pic, jac, n, K, kmax, owner, e, size);
+    for (unsigned e = 0; Kw && kmax > 0 && e < 3; e++)
+        walls_along(pic, jac, n, Kw, kmax, owner, e, size);
 }

@@ -87,6 +87,41 @@ static void move_along_modes(const qd_eom *e, size_t nvals, const qd_expr *const
     }
 }
 
+/* The springs' stiffness: between particles (K) and to walls (Kw), the
+ * Hessians of V's terms that are not linear in the positions
+ * (modes_terms.c), a term that holds a particle to the origin by its
+ * distance drawn as a spring from there instead of to a wall (in a plane:
+ * k/2 x1^2 on a chain along x is |r1| - a too).  False
+ * (nothing set) when V cannot be split so. */
+static bool spring_terms(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
+                         const qd_expr *const *syms, const double *vals, const double *q0,
+                         const double *jac, double size, qd_modes_picture *pic, double *K,
+                         double *Kw) {
+    size_t n = e->n, np = pic->np;
+    qd__lin_springs sp;
+    if (qd__lin_springs_find(ctx, e, m, nvals, syms, vals, q0, jac, np, size, &sp) != QD_OK) {
+        qd_ctx_clear_error(ctx);
+        return false;
+    }
+    for (size_t k = 0; k < sp.nt; k++) {
+        /* on a line (a chain) a spring along it is drawn to a wall beyond */
+        size_t a = pic->ay == 3 ? SIZE_MAX : sp.centre[k];
+        for (size_t u = 0; u < n * n; u++) {
+            K[u] += sp.K[k * n * n + u];
+            Kw[u] += a == SIZE_MAX ? sp.K[k * n * n + u] : 0;
+        }
+        for (size_t l = 0; a != SIZE_MAX && l < pic->nlinks; l++)
+            if (pic->links[l].a == a && pic->links[l].b == np)
+                a = SIZE_MAX; /* a second term of the same spring */
+        if (a != SIZE_MAX && pic->nlinks < QD_MODES_PLOT_MAXLINKS) {
+            pic->links[pic->nlinks++] = (qd_modes_link_of){a, np, QD_MODES_SPRING};
+            pic->pivot = true;
+        }
+    }
+    qd__lin_springs_free(&sp);
+    return true;
+}
+
 /* What joins the particles: the positions' Jacobian along each coordinate
  * (forward differences, as the modes') and K0 (modes_links.c). */
 static qd_status find_links(qd_ctx *ctx, const qd_eom *e, const qd_model *m, size_t nvals,
@@ -96,7 +131,7 @@ static qd_status find_links(qd_ctx *ctx, const qd_eom *e, const qd_model *m, siz
     double size = fmax(fmax(spread(pic->rest, np, 0), spread(pic->rest, np, 1)),
                        spread(pic->rest, np, 2));
     size = size > 0 ? size : 1;
-    double *jac = malloc((6 * np * n + 1) * sizeof *jac), *far = jac ? jac + 3 * np * n : NULL;
+    double *jac = malloc((12 * np * n + 1) * sizeof *jac), *far = jac ? jac + 3 * np * n : NULL;
     double h = 1e-6 * size;
     size_t *owner = malloc((n + 1) * sizeof *owner);
     qd_linear lin = {0};
@@ -112,12 +147,20 @@ static qd_status find_links(qd_ctx *ctx, const qd_eom *e, const qd_model *m, siz
         qd_prog_run(prog, w, d);
         for (size_t k = 0; k < 3 * np; k++)
             d[k] = (d[k] - pic->rest[k]) / h;
-        q[j] = q0[j] + 1e-3 * size; /* a rod's length is kept at any step */
-        put_state(e, nvals, syms, w, q);
-        qd_prog_run(prog, w, far + j * 3 * np);
+        for (int f = 0; f < 3; f++) { /* a rod's length is kept at any step: */
+            q[j] = q0[j] + (f == 1 ? -1e-3 : 1e-3 * (f + 1)) * size; /* +H, -H, +2H */
+            put_state(e, nvals, syms, w, q);
+            qd_prog_run(prog, w, far + ((size_t)f * n + j) * 3 * np);
+        }
+    }
+    double *K = have_k ? calloc(2 * n * n, sizeof *K) : NULL, *Kw = K ? K + n * n : NULL;
+    if (K && !spring_terms(ctx, e, m, nvals, syms, vals, q0, jac, size, pic, K, Kw)) {
+        memcpy(K, lin.K, n * n * sizeof *K); /* no V of its own (L given): K0 */
+        memcpy(Kw, lin.K, n * n * sizeof *K);
     }
     if (jac && owner)
-        qd__lin_modes_links(pic, jac, far, n, have_k ? lin.K : NULL, size, owner);
+        qd__lin_modes_links(pic, jac, far, n, K, Kw, size, owner);
+    free(K);
     qd_linear_free(&lin);
     qd_status st = jac && owner ? QD_OK : QD_ERR_NOMEM;
     free(jac);
@@ -256,9 +299,16 @@ static void pic_xy(const qd_modes_picture *pic, const double *pos, size_t i, dou
 static qd_status add_wall(qd_plot *p, const qd_modes_picture *pic, const double *pos, size_t a,
                           size_t w) {
     unsigned e = pic->wall_axis[w];
+    const double *at = pic->wall + 3 * w;
+    if (e == 3 && pic->ay != 3) { /* a pivot at a fixed point, a rod from it */
+        double ax, ay;
+        pic_xy(pic, pos, a, &ax, &ay);
+        qd_status st = qd_plot_add_mark(p, QD_PLOT_ROD, ax, ay, at[pic->ax], at[pic->ay]);
+        return st == QD_OK ? qd_plot_add_mark(p, QD_PLOT_PIVOT, at[pic->ax], at[pic->ay], 0, 0)
+                           : st;
+    }
     if (e != pic->ax && e != pic->ay)
         return QD_OK;
-    const double *at = pic->wall + 3 * w;
     double ax, ay, wx, wy, rx, ry;
     pic_xy(pic, pos, a, &ax, &ay);
     pic_xy(pic, pic->rest, a, &rx, &ry);

@@ -1,28 +1,14 @@
 /*
- * src/lyap/section_out.c - a surface of section written out (qdot/lyapunov.h):
- * the line `qdot poincare` says after its run (qd_poincare_summary_print)
- * and its JSON document (qd_poincare_json_begin, qd_poincare_json_end), of
- * the shape of simulate's: "model", "columns", "rows", then the run's
+ * src/lyap/section_out.c - a surface of section written out as JSON
+ * (qdot/lyapunov.h: qd_poincare_json_begin, qd_poincare_json_end; the
+ * text summary of its runs is qd_poincare_print, orbits.c), of the shape
+ * of simulate's: "model", "columns", "rows", then the run's
  * summary (qd_sim_summary_json's keys) and the crossings counted.
  */
 #include "qdot/lyapunov.h"
 
-#include <math.h>
-
 #include "qdot/json.h"
 #include "base/args.h"
-
-qd_status qd_poincare_summary_print(const qd_poincare_result *r, qd_sim_method method,
-                                    const char *prefix, qd_buf *out) {
-    QD_ARGS(QD_ERR_ARG, r && out);
-    const qd_sim_stats *st = &r->stats;
-    qd_buf_printf(out, "%s%s, %zu crossing%s by t = %g: %zu steps, %zu evaluations, %zu "
-                       "rejected; energy error %.3g over the steps and crossings\n",
-                  prefix ? prefix : "", qd_sim_method_name(method), r->got,
-                  r->got == 1 ? "" : "s", st->t, st->steps, st->evals, st->rejected,
-                  fmax(st->energy_error_max, st->energy_error_steps));
-    return out->failed ? QD_ERR_NOMEM : QD_OK;
-}
 
 qd_status qd_poincare_json_begin(qd_json *j, const char *model, size_t ncols,
                                  const char *const *names, bool rows) {

@@ -72,6 +72,18 @@ qd_status qd__mech_con_reduce(qd_ctx *ctx, qd_eom *e, bool *dropped);
  * step cancelled; NULL on failure (reason in ctx). */
 const qd_expr *qd__mech_det(qd_ctx *ctx, size_t n, const qd_expr *const *A);
 
+struct qd_metric_singular;
+/* x >= 0 wherever it is defined, read from its form (zero_set.c): positive
+ * numbers, constants and symbols, even powers, products of those and sums
+ * of those with one term positive; *pos: x > 0 too. */
+bool qd__mech_nonneg(const qd_expr *x, bool *pos);
+/* The zeros of det in the n symbols q, factor by factor (zero_set.c): a
+ * factor linear in one of them solved for it (r = 0), sin and cos of one
+ * (theta = 0 + k pi), any other factor = 0; factors free of q and positive
+ * ones left out.  *out is allocated (qd__free), *count entries. */
+qd_status qd__zero_set(qd_ctx *ctx, const qd_expr *det, size_t n, const qd_expr *const *q,
+                       struct qd_metric_singular **out, size_t *count);
+
 /* ---- constraints ---------------------------------------------------------- */
 
 /* --eliminate: solve the holonomic constraints of s that allow it for one

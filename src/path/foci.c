@@ -9,7 +9,7 @@
  *     J(t0) = 0, K(t0) = Z0,  A = da/dq, B = da/dv,
  *
  * with the Dormand-Prince 5(4) pair and Shampine's dense output (the
- * tables of src/num/dopri5.c).  A and B are central differences of
+ * tables of src/num/dopri5.c, the stages by num's loop, qd__num_rk_stages).  A and B are central differences of
  * qd_eom_eval's accelerations, not symbolic derivatives: e is const here
  * (qd_eom_solve would change it) and M q'' = f need not solve in closed
  * form; the step (cube root of eps, scaled) leaves them accurate to about
@@ -60,9 +60,7 @@
 #define FZ_RANK 1e-6
 #define FZ_SWEEPS 60    /* one-sided Jacobi sweeps, far more than ever needed */
 
-#define C qd__num_dp5_c /* the pair's tables, num's one copy */
-#define AT qd__num_dp5_a
-#define E qd__num_dp5_e
+#define E qd__num_dp5_e /* the pair's tables, num's one copy */
 #define P qd__num_dp5_p
 
 typedef struct fz {
@@ -73,6 +71,7 @@ typedef struct fz {
     const qd_expr **syms;
     double *vals;
     double *y, *ynew, *k[7], *tmp, *yd; /* dim each (tmp 2n + dim) */
+    qd_status st;                       /* the last right-hand side's (stage_rhs) */
     double *A, *B, *ap, *am, *M;        /* n*n, n*n, n, n, n*n */
     double *W, *V, *sv;                 /* n*n, n*n, n: the SVD's */
     double *Ac, *Q, *Z, *Mr;            /* nc*n, n*n, n*n, n*n: the tangent space's */
@@ -420,21 +419,25 @@ static qd_status scan(fz *z, double told, double h, double *gprev, double *relen
     return st;
 }
 
-/* One Dormand-Prince attempt of size h from (t, z->y): z->ynew and the
- * scaled error norm. */
+/* rhs as num's stage loop calls it: the status kept in z->st. */
+static bool stage_rhs(void *data, double t, const double *y, double *dy) {
+    fz *z = data;
+    z->st = rhs(z, t, y, dy);
+    return z->st == QD_OK;
+}
+
+/* One Dormand-Prince attempt of size h from (t, z->y): z->ynew, the seven
+ * stages in z->k (the last at t + h, for the dense output) and the scaled
+ * error norm.  The stages are num's one loop (qd__num_rk_stages on
+ * qd__num_dp5, as src/sim's dopri5 steps); k[0] is evaluated here, not
+ * carried over from the last step, so a rejected step costs what it did. */
 static qd_status attempt(fz *z, double t, double h, double *errn) {
     size_t dim = z->dim;
-    qd_status st = QD_OK;
-    for (int s = 0; s < 7 && st == QD_OK; s++) {
-        double *ys = s == 6 ? z->ynew : z->tmp + 2 * z->n; /* tmp's tail: stage state */
-        for (size_t i = 0; i < dim; i++) {
-            double acc = 0;
-            for (int j = 0; j < s; j++)
-                acc += AT[s][j] * z->k[j][i];
-            ys[i] = z->y[i] + h * acc;
-        }
-        st = rhs(z, t + C[s] * h, ys, z->k[s]);
-    }
+    z->st = rhs(z, t, z->y, z->k[0]);
+    if (z->st == QD_OK) /* tmp's tail: the stage state (rhs perturbs its head) */
+        (void)qd__num_rk_stages(&qd__num_dp5, stage_rhs, z, dim, t, h, z->y, z->ynew, z->k,
+                                z->tmp + 2 * z->n, true);
+    qd_status st = z->st;
     double sum = 0;
     for (size_t i = 0; i < dim && st == QD_OK; i++) {
         double err = 0;

@@ -4,6 +4,7 @@
  * measures every method reports.
  */
 #include "simint.h"
+#include "sym/sym_export.h"
 #include "../base/mem.h"
 #include "../base/args.h"
 
@@ -433,7 +434,8 @@ static qd_status initial_speeds(qd__sim_run *r, const qd_sim_opts *o) {
         return project ? project_positions(r, o->t0, y) : QD_OK;
     }
     memcpy(r->qd, o->qd0, s->n * sizeof *r->qd);
-    qd_status st = s->m && !o->no_project ? qd__sim_project(s, o->t0, y, r->qd) : QD_OK;
+    qd_status st = s->m && !o->no_project ? qd__sim_project_start(s, o->t0, y, r->qd,
+                                                                   o->qd0_given) : QD_OK;
     if (st == QD_OK)
         qd__sim_speeds_from(s, o->t0, y, r->qd, y + s->n);
     return st;
@@ -471,7 +473,7 @@ static qd_status initial_state(qd__sim_run *r, const qd_sim_opts *o) {
     /* the contacts' modes first: a slipping one's row is not projected */
     qd_status st = s->fr ? initial_modes(r, o->t0, qd) : QD_OK;
     if (st == QD_OK && s->m && !o->no_project)
-        st = qd__sim_project(s, o->t0, q, qd);
+        st = qd__sim_project_start(s, o->t0, q, qd, o->qd0_given);
     if (st != QD_OK)
         return st;
     if (it->form == QD__HAM)
@@ -802,6 +804,45 @@ static qd_status step(qd__sim_run *r, loop *L, size_t *grid) {
     return QD_OK;
 }
 
+/* An adaptive step that shrinks without reaching round-off (the methods'
+ * underflow test, 10 ulp of t) can crawl for hours near a point where the
+ * equations are singular: issue 37's Whipple bicycle, fallen over with its
+ * front wheel flat on the ground (where the rolling contact is undefined),
+ * took steps of 1e-8 s at a constant pace, the step limit of 1e8 hours
+ * away.  Every COLLAPSE_WINDOW steps the pace of the window is compared with
+ * the fastest window's and extrapolated to t_end: fallen more than
+ * COLLAPSE_DROP times and needing more than max_steps at that pace, the
+ * step has collapsed, named with its time and step.  Either test alone
+ * would misname a run: a pericentre passage slows a run briefly, and a run
+ * given few steps needs more than it has from the start. */
+#define COLLAPSE_WINDOW 1000
+#define COLLAPSE_DROP 1e3
+
+typedef struct pace {
+    double mark;    /* t at the window's start */
+    double fastest; /* the longest mean step of a window so far */
+} pace;
+
+static qd_status collapsed(qd__sim_run *r, const qd_sim_opts *o, pace *p) {
+    qd__sim_integ *it = r->it;
+    double mean = (it->t - p->mark) / COLLAPSE_WINDOW, left = o->t_end - it->t;
+    p->mark = it->t;
+    if (!(mean > 0)) /* an impact or a switch went back: no pace */
+        return QD_OK;
+    p->fastest = fmax(p->fastest, mean);
+    double need = left / mean;
+    if (mean * COLLAPSE_DROP > p->fastest || need <= (double)(max_steps(o) - it->steps))
+        return QD_OK;
+    qd__sim_stop(r->s, QD_STOP_STEP_COLLAPSE, it->t, it->h);
+    qd_ctx_error(r->s->ctx, QD_ERR_NUMERIC,
+                 "step size collapse at t = %.17g: %d steps of %.3g on average, %.2g times "
+                 "shorter than before; at that pace the end is %.3g steps away (the most is "
+                 "%zu): the equations are singular near there", it->t, COLLAPSE_WINDOW, mean,
+                 p->fastest / mean, need, max_steps(o));
+    qd_ctx_error_about(r->s->ctx, QD_SUBJECT_NONE, 0, "max_steps", QD_REASON_NONE, NULL);
+    return QD_ERR_NUMERIC;
+}
+
 static qd_status integrate(qd__sim_run *r, const qd_sim_opts *o, emitter *em, measure *ms,
                            qd_sim_stats *stats) {
     qd_sim *s = r->s;
@@ -809,6 +850,7 @@ static qd_status integrate(qd__sim_run *r, const qd_sim_opts *o, emitter *em, me
     loop L = {.o = o, .em = em, .ms = ms, .stats = stats,
               .fixed = !qd_sim_method_adaptive(o->method) || o->fixed};
     size_t grid = 1;
+    pace p = {it->t, 0};
     qd_status st = make_row(r, ms, it->t, it->y, r->row);
     if (st != QD_OK)
         return st;
@@ -826,6 +868,12 @@ static qd_status integrate(qd__sim_run *r, const qd_sim_opts *o, emitter *em, me
         }
         if ((st = step(r, &L, &grid)) != QD_OK)
             return st;
+        if (!L.fixed && it->steps % COLLAPSE_WINDOW == 0 && (st = collapsed(r, o, &p)) != QD_OK)
+            return st;
+        if (o->progress && !em->stopped && o->progress(o->progress_data, it->t)) {
+            em->stopped = true; /* as the row callback's stop: the rows written are whole */
+            em->last_t = it->t;
+        }
     }
     /* the final row: the state where the run ended */
     return make_row(r, NULL, it->t, it->y, r->row);
@@ -920,6 +968,8 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
         st = initial_state(&r, o);
     if (st == QD_OK && s->m && !o->no_project && !s->hamilton) /* what the projection moved */
         initial_moved(s->n, o, it.y, s->se || o->u0 ? NULL : r.qd, stats);
+    for (size_t j = 0; st == QD_OK && j < s->n; j++)
+        stats->initial_solved += s->solved[j];
     if (st == QD_OK && s->nimp)
         st = qd__sim_impact_check_start(&r, it.t, it.y);
     if (st == QD_OK)
@@ -950,7 +1000,7 @@ static qd_status run(qd_sim *s, const qd_sim_opts *o, qd_sim_sink sink, void *da
     }
     stats->steps = it.steps;
     stats->evals = s->evals;
-    stats->jit = s->acc && qd_prog_jitted(s->acc);
+    stats->jit = s->acc && (qd_prog_jitted(s->acc) || qd__prog_spd(s->acc));
     stats->rejected = it.rejected;
     stats->E0 = ms.E0;
     double den = fmax(fabs(ms.E0), ms.Tmax);
@@ -997,8 +1047,10 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
     qd_status st = qd__sim_ws_alloc(&w, ctx);
     w.jit_mode = o->jit;
     w.jit_tried = false;
+    w.jit_t0 = o->t0;
+    w.jit_t1 = o->t_end;
     if (st == QD_OK && o->jit == QD_SIM_JIT_ON)
-        qd__sim_jit_tier(&w, true);
+        qd__sim_jit_tier(&w, true, o->t0);
     if (st == QD_OK && o->par)
         use_par(&w, o->par);
     if (st == QD_OK)
@@ -1009,6 +1061,8 @@ static qd_status run_copy(qd_ctx *ctx, const qd_sim *s, const qd_sim_opts *o, qd
         st = run(&w, o, sink, data, stats, final);
     for (size_t c = 0; con_err && w.con_err && c < s->m; c++)
         con_err[c] = w.con_err[c];
+    for (size_t j = 0; keep && w.solved && j < s->n; j++)
+        keep->solved_last[j] = w.solved[j];
     if (keep)
         qd__sim_fric_keep(keep, &w);
     qd__sim_fric_run_free(&w);

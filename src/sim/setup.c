@@ -101,6 +101,9 @@ qd_sim_setup *qd_sim_setup_new(qd_ctx *ctx, const qd_model *m, bool no_speeds) {
         s->sim = s->e ? qd_sim_new(ctx, m, s->e) : NULL;
     }
     bool ok = s->sim && state_init(s);
+    if (ok && (!(s->given = calloc(s->n + 1, sizeof *s->given)) ||
+               !(s->qd0_given = calloc(s->nq + 1, sizeof *s->qd0_given))))
+        ok = nomem(ctx);
     if (ok && !(s->vals0 = malloc((s->n + 1) * sizeof *s->vals0)))
         ok = nomem(ctx);
     if (ok) /* the model's own initial state, for qd_sim_setup_restart */
@@ -122,6 +125,8 @@ void qd_sim_setup_free(qd_sim_setup *s) {
         qd_native_unload(s->native);
     free(s->native);
     free(s->input_given);
+    free(s->given);
+    free(s->qd0_given);
     free(s->q0);
     free(s->p0);
     free(s->u0);
@@ -336,6 +341,8 @@ qd_status qd_sim_setup_initial(qd_sim_setup *s, const char *text) {
         motion = motion || given[i];
     size_t at = s->n - s->extra;
     for (size_t i = 0; st == QD_OK && i < s->n; i++)
+        s->given[i] = given[i];
+    for (size_t i = 0; st == QD_OK && i < s->n; i++)
         if (given[i])
             s->vals[i] = g[i];
         else if (motion && s->form != QD_SIM_FORM_HAMILTON && i >= at)
@@ -386,6 +393,7 @@ static qd_status initial_values(qd_sim_setup *s) {
             i++;
         s->q0[j] = s->vals[i];
         s->qd0[j] = s->vals[n + i];
+        s->qd0_given[j] = s->given[n + i];
     }
     bool any = false;
     for (size_t r = 0; r < s->extra; r++)
@@ -587,6 +595,7 @@ qd_status qd_sim_setup_options(qd_sim_setup *s, const qd_sim_setup_opts *o, qd_s
         return st;
     out->q0 = s->q0;
     out->qd0 = s->qd0;
+    out->qd0_given = s->qd0_given;
     out->p0 = s->p0;
     out->u0 = s->u0;
     if (isfinite(t_end) && !(t_end > out->t0)) /* (not finite: qd_sim_check_opts says so) */
@@ -605,6 +614,8 @@ qd_status qd_sim_setup_restart(qd_sim_setup *s, const char *initial, qd_sim_opts
     QD_ARGS_CTX(s->ctx, out);
     memcpy(s->vals, s->vals0, s->n * sizeof *s->vals);
     s->initial_given = false;
+    for (size_t i = 0; i < s->n; i++)
+        s->given[i] = false;
     qd_status st = initial ? qd_sim_setup_initial(s, initial) : QD_OK;
     if (st == QD_OK)
         st = initial_values(s);
@@ -613,6 +624,7 @@ qd_status qd_sim_setup_restart(qd_sim_setup *s, const char *initial, qd_sim_opts
     out->t0 = s->vals[2 * s->nq];
     out->q0 = s->q0;
     out->qd0 = s->qd0;
+    out->qd0_given = s->qd0_given;
     out->p0 = s->p0;
     out->u0 = s->u0;
     if (!(out->t_end > out->t0))

@@ -22,6 +22,8 @@ struct qd_sim_setup {
     double *vals;
     double *vals0;        /* the model's own initial state (qd_sim_setup_restart) */
     bool initial_given;
+    bool *given;          /* n: the state's slots given by qd_sim_setup_initial */
+    bool *qd0_given;      /* nq: the velocities given, in the equations' order */
     double *q0, *qd0, *p0, *u0; /* the run's initial values (qd_sim_setup_options) */
     qd_native *native;
     double period;        /* qd_sim_setup_options' period, else NaN */

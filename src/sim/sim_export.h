@@ -79,6 +79,8 @@ struct qd_sim {
     void (*tay_native)(double *c, size_t stride, size_t k);
     unsigned long tay_nreg, tay_nlive;
     double *con_err_last; /* m: qd_sim_run's last per-constraint residuals */
+    bool *solved;         /* n: the velocities the start solved (qd_sim_initial_solved) */
+    bool *solved_last;    /* n: the same, kept after qd_sim_run */
     /* unilateral contacts (impact.c): their gaps are events nev.. of aux;
      * imp gives each one's gradient dGAP/dq (n) and dGAP/dt */
     size_t nimp, imp_n;
@@ -124,6 +126,7 @@ struct qd_sim {
      * compiled (or tried to) */
     int jit_mode;
     bool jit_tried;
+    double jit_t0, jit_t1; /* the run's span, to predict its length */
     double *con_err;  /* m: the worst residual of each constraint in this run */
     double tnow;  /* for messages */
     /* A run's own right-hand side in place of the form's, for a caller that

@@ -99,9 +99,13 @@ static inline size_t qd__sim_fev0(const qd_sim *s) { return s->nev + s->nimp; }
  * when M or the saddle matrix is singular. */
 qd_status qd__sim_rhs(qd_sim *s, qd__sim_form form, double t, const double *y, double *dy);
 /* The run's programs as machine code (jit.c): at once when now, else once
- * its evaluations have done QD_SIM_JIT_WORK instructions' worth of
- * interpreting; tried once per run, a failure leaving them interpreted. */
-void qd__sim_jit_tier(qd_sim *s, bool now);
+ * its evaluations, those done and those predicted to t_end from the time t
+ * reached, come to QD_SIM_JIT_WORK instructions' worth of interpreting;
+ * tried once per run, a failure leaving them interpreted. */
+void qd__sim_jit_tier(qd_sim *s, bool now, double t);
+/* qd__num_solve_spd's tolerance in the mass matrix's solve (system.c and
+ * its jitted twin, jit.c). */
+#define QD__SIM_SPD_TOL 1e-10
 /* q' from (q, p) at t (canonical form). */
 qd_status qd__sim_velocity(qd_sim *s, double t, const double *q, const double *p, double *qd);
 /* p from (q, q'). */
@@ -340,5 +344,10 @@ double qd__sim_fric_slip(const qd_sim *s, size_t c);
  * constraint Jacobian) and q' onto A q' + a0 = 0.  QD_ERR_NUMERIC naming the
  * constraint when positions cannot be brought to it. */
 qd_status qd__sim_project(qd_sim *s, double t, double *q, double *qd);
+/* The start's projection: as qd__sim_project, the velocities given
+ * (given[j], may be NULL) kept and the others solved (s->solved marks
+ * those that changed); QD_ERR_ARG when a constraint only given velocities
+ * enter is violated by them. */
+qd_status qd__sim_project_start(qd_sim *s, double t, double *q, double *qd, const bool *given);
 
 #endif

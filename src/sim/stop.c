@@ -33,6 +33,7 @@ static const struct {
     {QD_STOP_PROJECTION, "projection", "projection failure"},
     {QD_STOP_NONFINITE, "nonfinite", "non-finite state"},
     {QD_STOP_PAINLEVE, "painleve", "Painleve paradox"},
+    {QD_STOP_STEP_COLLAPSE, "step_collapse", "step size collapse"},
     {QD_STOP_FAILURE, "failure", "failure"},
 };
 _Static_assert(sizeof stops / sizeof *stops == QD_STOP_FAILURE + 1, "a row for every stop code");

@@ -68,6 +68,18 @@ static void text_impacts(const qd_sim_report *r, const char *pre, qd_buf *b) {
              st->t, st->impacts, plural(st->impacts));
 }
 
+/* The velocities the start solved from the constraints (qd0_given). */
+static void text_solved(const qd_sim_report *r, const char *pre, qd_buf *b) {
+    const qd_sim *s = r->s;
+    size_t at = 1 + s->n + (s->se ? s->nu : 0);
+    qd_buf_printf(b, "%snote: solved from the velocity constraints, the velocities given kept:",
+                  pre);
+    for (size_t j = 0, k = 0; j < s->n; j++)
+        if (qd_sim_initial_solved(s, j))
+            qd_buf_printf(b, "%s %s", k++ ? "," : "", s->names[at + j]);
+    qd_buf_printf(b, "\n");
+}
+
 static void text_friction(const qd_sim_report *r, const char *pre, qd_buf *b) {
     const qd_sim_stats *st = r->stats;
     /* the surfaces' work only where they moved */
@@ -105,10 +117,13 @@ static void text_out(const qd_sim_report *r, const char *pre, qd_buf *b) {
              st->events_unresolved_event + 1, st->events_unresolved,
              plural(st->events_unresolved), st->events_unresolved_t,
              st->events_unresolved_spacing, 1 / st->events_unresolved_spacing);
-    if (st->initial_moved_q > QD_SIM_MOVED_NOTE || st->initial_moved_qd > QD_SIM_MOVED_NOTE)
+    if (st->initial_moved_q > QD_SIM_MOVED_NOTE ||
+        (st->initial_moved_qd > QD_SIM_MOVED_NOTE && !st->initial_solved))
         line(b, pre, "note: the initial state was off the constraints and was projected onto "
                      "them: q moved by %.3g, q' by %.3g\n",
              st->initial_moved_q, st->initial_moved_qd);
+    if (st->initial_solved)
+        text_solved(r, pre, b);
     if (qd_model_nimpacts(r->s->model))
         text_impacts(r, pre, b);
     if (qd_sim_ncontacts(r->s))

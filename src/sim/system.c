@@ -19,6 +19,7 @@
 
 #include "codegen/codegen_export.h"
 #include "num/num.h"
+#include "sym/sym_export.h"
 #include "base/mem.h"
 #include "../base/args.h"
 
@@ -252,7 +253,8 @@ qd_status qd__sim_names(qd_sim *s) {
     s->names = qd__calloc(s->ctx, s->nnames, sizeof *s->names);
     s->holonomic = qd__calloc(s->ctx, s->m + 1, sizeof *s->holonomic);
     s->con_err_last = qd__calloc(s->ctx, s->m + 1, sizeof *s->con_err_last);
-    if (!s->names || !s->holonomic || !s->con_err_last)
+    s->solved_last = qd__calloc(s->ctx, n + 1, sizeof *s->solved_last);
+    if (!s->names || !s->holonomic || !s->con_err_last || !s->solved_last)
         return QD_ERR_NOMEM;
     s->names[k++] = dup_printf(s->ctx, "t", "", "");
     for (size_t j = 0; j < n; j++)
@@ -331,6 +333,7 @@ void qd_sim_free(qd_sim *s) {
     if (!s)
         return;
     qd__free(s->con_err_last);
+    qd__free(s->solved_last);
     qd__sim_impact_free(s);
     qd__sim_fric_free(s);
     qd__sim_taylor_native_free(s);
@@ -369,6 +372,10 @@ bool qd_sim_canonical(const qd_sim *s) { QD_ARGS(false, s); return s->canonical;
 double qd_sim_constraint_error(const qd_sim *s, size_t c) {
     QD_ARGS(NAN, s);
     return c < s->m ? s->con_err_last[c] : 0;
+}
+bool qd_sim_initial_solved(const qd_sim *s, size_t j) {
+    QD_ARGS(false, s);
+    return j < s->n && s->solved_last && s->solved_last[j];
 }
 bool qd_sim_separable(const qd_sim *s) { QD_ARGS(false, s); return s->separable; }
 bool qd_sim_conservative(const qd_sim *s) { QD_ARGS(false, s); return s->conservative; }
@@ -552,6 +559,7 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     w->K = qd__malloc(ctx, (N * N + 2 * N + 5 * n + 1) * sizeof *w->K);
     w->pc = qd__malloc(ctx, (N + 1) * sizeof *w->pc);
     w->con_err = qd__calloc(ctx, w->m + 1, sizeof *w->con_err);
+    w->solved = qd__calloc(ctx, n + 1, sizeof *w->solved);
     bool ok = prog_ws(ctx, w->acc, w->acc_n, &w->acc_out, &w->acc_w);
     ok = prog_ws(ctx, w->con, w->con_n, &w->con_out, &w->con_w) && ok;
     ok = prog_ws(ctx, w->mom, w->mom_n, &w->mom_out, &w->mom_w) && ok;
@@ -563,7 +571,7 @@ qd_status qd__sim_ws_alloc(qd_sim *w, qd_ctx *ctx) {
     ok = prog_ws(ctx, w->kin, w->kin_n, &w->kin_out, &w->kin_w) && ok;
     ok = prog_ws(ctx, w->udef, w->udef_n, &w->udef_out, &w->udef_w) && ok;
     ok = prog_ws(ctx, w->uprog, w->nuin, &w->uprog_out, &w->uprog_w) && ok;
-    if (!ok || !w->in || !w->K || !w->pc || !w->con_err)
+    if (!ok || !w->in || !w->K || !w->pc || !w->con_err || !w->solved)
         return QD_ERR_NOMEM;
     w->rhs = w->K + N * N;
     w->tmp = w->rhs + N;
@@ -582,6 +590,7 @@ void qd__sim_ws_free(qd_sim *w) {
     for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++)
         qd__free(bufs[i]);
     qd__free(w->pc);
+    qd__free(w->solved);
 }
 
 size_t qd_sim_columns(const qd_sim *s, qd_sim_method method, const char **names, size_t cap) {
@@ -753,7 +762,7 @@ static qd_status solve_mass(qd_sim *s, double t, const double *M, const double *
     memcpy(s->K, M, n * n * sizeof *M);
     memcpy(r0, r, n * sizeof *r);
     memcpy(x, r0, n * sizeof *x);
-    if (qd__num_solve_spd(n, s->K, x, 1e-10))
+    if (qd__num_solve_spd(n, s->K, x, QD__SIM_SPD_TOL))
         return QD_OK;
     memcpy(s->K, M, n * n * sizeof *M);
     memcpy(x, r0, n * sizeof *x);
@@ -807,7 +816,13 @@ static qd_status lag_rhs(qd_sim *s, double t, const double *y, double *dy) {
         return QD_OK;
     }
     set_state(s, t, y, y + n);
-    qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
+    /* jitted with its solve (jit.c): M and f in acc_out either way, and
+     * solve_mass only where that solve's tests fail, to decide as always */
+    qd__jit_spd_fn spd = s->acc ? qd__prog_spd(s->acc) : NULL;
+    if (spd && spd(s->in, s->acc_out, dy + n))
+        return QD_OK;
+    if (!spd)
+        qd_prog_eval(s->acc, s->acc_w, s->in, s->acc_out);
     const double *M = s->acc_out, *f = M + n * n;
     return solve_mass(s, t, M, f, dy + n);
 }
@@ -869,7 +884,7 @@ static qd_status form_rhs(qd_sim *s, qd__sim_form form, double t, const double *
 
 qd_status qd__sim_rhs(qd_sim *s, qd__sim_form form, double t, const double *y, double *dy) {
     if ((++s->evals & 4095) == 0 && s->jit_mode == QD_SIM_JIT_AUTO && !s->jit_tried)
-        qd__sim_jit_tier(s, false);
+        qd__sim_jit_tier(s, false, t);
     if (s->ext_rhs)
         return s->ext_rhs(s->ext_data, t, y, dy);
     /* an input callback that failed ends the run: no more calls to it */

@@ -346,7 +346,7 @@ const qd_expr *qd_cancel(qd_ctx *ctx, const qd_expr *e) {
     if (!e)
         return NULL;
     qd__ptrmap memo = QD_PTRMAP_AL(qd__ctx_allocator(ctx));
-    qd_gmp_section outer = qd__gmp_enter(ctx);
+    qd__gmp_section outer = qd__gmp_enter(ctx);
     const qd_expr *r = cancel_expr(ctx, e, &memo);
     qd__ptrmap_free(&memo);
     return qd__gmp_leave(ctx, outer) ? r : NULL;

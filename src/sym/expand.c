@@ -28,10 +28,10 @@
  * stored anyway). */
 #define MAX_EXPAND_EXP (1L << 24)
 
-typedef struct qd_powslot {
+typedef struct qd__powslot {
     uint64_t key;
     const qd_expr *node;
-} qd_powslot;
+} qd__powslot;
 
 void qd__xs_init(qd__xsess *s, qd_ctx *ctx) {
     memset(s, 0, sizeof *s);
@@ -260,7 +260,7 @@ static const qd_expr *gen_pow(qd__xsess *s, uint32_t var, int32_t exp) {
     uint64_t key = (uint64_t)var << 32 | (uint32_t)exp;
     if (2 * (s->powlen + 1) > s->powcap) {
         size_t cap = s->powcap ? 2 * s->powcap : 64;
-        qd_powslot *ns = qd__calloc(s->ctx, cap, sizeof *ns);
+        qd__powslot *ns = qd__calloc(s->ctx, cap, sizeof *ns);
         if (!ns) {
             qd__oom(s->ctx);
             return NULL;
@@ -481,7 +481,7 @@ const qd_expr *qd_expand(qd_ctx *ctx, const qd_expr *e) {
         return NULL;
     qd__xsess s;
     qd__xs_init(&s, ctx);
-    qd_gmp_section outer = qd__gmp_enter(ctx);
+    qd__gmp_section outer = qd__gmp_enter(ctx);
     const qd_expr *r = qd__xs_expand(&s, e);
     qd__xs_free(&s);
     return qd__gmp_leave(ctx, outer) ? r : NULL;

@@ -581,7 +581,7 @@ static const qd_expr *post_factor(qd_ctx *ctx, const qd_expr *e, void *data) {
 const qd_expr *qd__factor_polys(qd_ctx *ctx, const qd_expr *e, qd__ptrmap *memo) {
     if (!e)
         return NULL;
-    qd_gmp_section outer = qd__gmp_enter(ctx);
+    qd__gmp_section outer = qd__gmp_enter(ctx);
     const qd_expr *r = qd__map(ctx, e, memo, post_factor, NULL);
     return qd__gmp_leave(ctx, outer) ? r : NULL; /* the values memo holds are right */
 }

@@ -30,7 +30,7 @@
 #include <gmp.h>
 #include <pthread.h>
 
-static _Thread_local qd_gmp_section cur;
+static _Thread_local qd__gmp_section cur;
 
 static void *(*gmp_alloc)(size_t);
 static void *(*gmp_realloc)(void *, size_t, size_t);
@@ -93,14 +93,14 @@ void qd__gmp_install(void) {
     pthread_once(&once, install);
 }
 
-qd_gmp_section qd__gmp_enter(qd_ctx *ctx) {
-    qd_gmp_section outer = {cur.ctx, cur.refused};
+qd__gmp_section qd__gmp_enter(qd_ctx *ctx) {
+    qd__gmp_section outer = {cur.ctx, cur.refused};
     cur.ctx = ctx;
     cur.refused = false;
     return outer;
 }
 
-bool qd__gmp_leave(qd_ctx *ctx, qd_gmp_section outer) {
+bool qd__gmp_leave(qd_ctx *ctx, qd__gmp_section outer) {
     bool refused = cur.refused;
     cur.ctx = outer.ctx;
     cur.refused = outer.refused || (refused && outer.ctx == ctx);

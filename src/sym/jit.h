@@ -15,12 +15,15 @@
 
 #include <stddef.h>
 
+#include "sym_export.h" /* qd__jit_spd_fn */
+
 struct qd_prog;
 
-#define QD__JIT_ABI 1
+#define QD__JIT_ABI 2
 
 /* The generated function: out[k] = output k of the program at in. */
 typedef void (*qd__jit_fn)(const double *in, double *out);
+
 
 typedef struct qd__jit_env {
     double (*pow)(double b, double e); /* qd__pow_value */
@@ -34,6 +37,10 @@ typedef struct qd__jit_ops {
     void *(*compile)(const struct qd_prog *p, const qd__jit_env *env, qd__jit_fn *fn, char *err,
                      size_t cap);
     void (*release)(void *code);
+    /* The same program with M x = f solved in the same code (*fn above);
+     * the code released by release. */
+    void *(*compile_spd)(const struct qd_prog *p, size_t n, double tol, const qd__jit_env *env,
+                         qd__jit_spd_fn *fn, char *err, size_t cap);
 } qd__jit_ops;
 
 #endif

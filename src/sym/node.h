@@ -70,10 +70,10 @@ struct qd_expr {
     const qd_expr *args[];
 };
 
-typedef struct qd_symtab_entry {
+typedef struct qd__symtab_entry {
     const char *name;
     const qd_expr *sym;
-} qd_symtab_entry;
+} qd__symtab_entry;
 
 /* The kernel's part of a context (base/ctx.h's ctx->sym), attached by
  * qd_ctx_new_with and released by qd_ctx_free through ctx->detach. */
@@ -140,13 +140,13 @@ bool qd__is_float(const qd_expr *e);
  * recorded, when one was refused: the caller then drops what it computed.
  * Sections nest. */
 #define QD_GMP_PROBE_MIN 1024
-typedef struct qd_gmp_section {
+typedef struct qd__gmp_section {
     qd_ctx *ctx;
     bool refused;
-} qd_gmp_section;
+} qd__gmp_section;
 void qd__gmp_install(void);
-qd_gmp_section qd__gmp_enter(qd_ctx *ctx);
-bool qd__gmp_leave(qd_ctx *ctx, qd_gmp_section outer);
+qd__gmp_section qd__gmp_enter(qd_ctx *ctx);
+bool qd__gmp_leave(qd_ctx *ctx, qd__gmp_section outer);
 
 /* ---- cmp.c --------------------------------------------------------------- */
 /* Natural-order comparison of names: theta2 < theta10. */

@@ -224,7 +224,7 @@ const qd_expr *qd__number_pow(qd_ctx *ctx, const qd_expr *a, const qd_expr *e, b
     double dbits = (double)ap * (double)mpz_sizeinbase(mpq_denref(a->u.q), 2) / (double)d;
     if (bits > QD_MAX_FOLD_BITS || dbits > QD_MAX_FOLD_BITS)
         return NULL;
-    qd_gmp_section outer = qd__gmp_enter(ctx);
+    qd__gmp_section outer = qd__gmp_enter(ctx);
     mpz_t num, den;
     mpz_inits(num, den, NULL);
     mpz_set(num, mpq_numref(a->u.q));

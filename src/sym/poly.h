@@ -113,7 +113,7 @@ typedef struct qd__xsess {
     size_t ngens, gcap;
     qd__poly **owned;
     size_t nowned, ocap;
-    struct qd_powslot *pows; /* cache of generator^k nodes */
+    struct qd__powslot *pows; /* cache of generator^k nodes */
     size_t powcap, powlen;
 } qd__xsess;
 

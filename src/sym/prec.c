@@ -40,7 +40,7 @@ int qd__prec(const qd_expr *e) {
     }
 }
 
-bool qd__split(qd_ctx *ctx, const qd_expr *e, qd_split *s) {
+bool qd__split(qd_ctx *ctx, const qd_expr *e, qd__product_split *s) {
     memset(s, 0, sizeof *s);
     size_t n = e->kind == QD_MUL ? e->nargs : 1;
     const qd_expr *const *f = e->kind == QD_MUL ? e->args : &e;
@@ -66,7 +66,7 @@ bool qd__split(qd_ctx *ctx, const qd_expr *e, qd_split *s) {
     return true;
 }
 
-void qd__split_free(qd_split *s) {
+void qd__split_free(qd__product_split *s) {
     qd__free(s->num);
     qd__free(s->den);
     s->num = s->den = NULL;

@@ -29,16 +29,16 @@ int qd__prec(const qd_expr *e);
  * den holds the factors b^e with e a negative number; they print as b^-e,
  * which reads back to the same node.  coeff is NULL when it is 1, and is
  * the numeric coefficient with its sign moved into neg otherwise. */
-typedef struct qd_split {
+typedef struct qd__product_split {
     bool neg;
     const qd_expr *coeff;
     size_t nnum, nden;
     const qd_expr **num, **den;
-} qd_split;
+} qd__product_split;
 
 /* false when out of memory (recorded in ctx); free with qd__split_free. */
-bool qd__split(qd_ctx *ctx, const qd_expr *e, qd_split *s);
-void qd__split_free(qd_split *s);
+bool qd__split(qd_ctx *ctx, const qd_expr *e, qd__product_split *s);
+void qd__split_free(qd__product_split *s);
 /* A power whose exponent is a negative number: it prints as 1/b^-e. */
 bool qd__is_recip(const qd_expr *e);
 /* Is e (a number) exactly -1/2, 1/2, -1? */

@@ -169,7 +169,7 @@ static void flipped(cp *p, const qd_expr *f, bool group) {
 }
 
 /* A hoisted reciprocal is a temporary: it multiplies instead of dividing. */
-static void keep_temps_up(cp *p, qd_split *s) {
+static void keep_temps_up(cp *p, qd__product_split *s) {
     size_t k = 0;
     for (size_t i = 0; i < s->nden; i++) {
         if (p->temps && qd__ptrmap_get(p->temps, s->den[i]))
@@ -180,7 +180,7 @@ static void keep_temps_up(cp *p, qd_split *s) {
     s->nden = k;
 }
 
-static void denominator(cp *p, const qd_split *s, bool q) {
+static void denominator(cp *p, const qd__product_split *s, bool q) {
     size_t n = q + s->nden;
     if (!n)
         return;
@@ -196,7 +196,7 @@ static void denominator(cp *p, const qd_split *s, bool q) {
 }
 
 static void product(cp *p, const qd_expr *e, bool sign) {
-    qd_split s;
+    qd__product_split s;
     if (!qd__split(p->ctx, e, &s)) {
         p->b->failed = true;
         return;

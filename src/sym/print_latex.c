@@ -151,7 +151,7 @@ static void factors(lp *p, size_t n, const qd_expr *const *f, bool flip, bool le
 }
 
 static void product(lp *p, const qd_expr *e, bool sign) {
-    qd_split s;
+    qd__product_split s;
     if (!qd__split(p->ctx, e, &s)) {
         p->b->failed = true;
         return;

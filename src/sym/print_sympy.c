@@ -118,7 +118,7 @@ static void flipped(sp *p, const qd_expr *f) {
 }
 
 static void product(sp *p, const qd_expr *e, bool sign) {
-    qd_split s;
+    qd__product_split s;
     if (!qd__split(p->ctx, e, &s)) {
         p->b->failed = true;
         return;

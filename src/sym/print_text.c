@@ -73,7 +73,7 @@ static void flipped(tp *p, const qd_expr *f, int need) {
     }
 }
 
-static void numerator(tp *p, const qd_split *s) {
+static void numerator(tp *p, const qd__product_split *s) {
     bool any = false;
     if (s->coeff && !(s->coeff->kind == QD_RATIONAL &&
                       mpz_cmpabs_ui(mpq_numref(s->coeff->u.q), 1) == 0 && s->nnum)) {
@@ -92,7 +92,7 @@ static void numerator(tp *p, const qd_split *s) {
         qd_buf_puts(p->b, "1");
 }
 
-static void denominator(tp *p, const qd_split *s) {
+static void denominator(tp *p, const qd__product_split *s) {
     bool q = s->coeff && s->coeff->kind == QD_RATIONAL &&
              mpz_cmp_ui(mpq_denref(s->coeff->u.q), 1) != 0;
     size_t n = q + s->nden;
@@ -114,7 +114,7 @@ static void denominator(tp *p, const qd_split *s) {
 }
 
 static void product(tp *p, const qd_expr *e, bool sign) {
-    qd_split s;
+    qd__product_split s;
     if (!qd__split(p->ctx, e, &s)) {
         p->b->failed = true;
         return;

@@ -48,6 +48,10 @@ struct qd_prog {
      * numbers. */
     _Atomic(qd__jit_fn) jit;
     void *jit_code;    /* what the JIT module releases */
+    /* The program and the solve of its M x = f in one function
+     * (qd__prog_jit_spd), or NULL; atomic for the same reason. */
+    _Atomic(qd__jit_spd_fn) spd;
+    void *spd_code;
 };
 
 /* The JIT's code released (prog_jit.c): qd_prog_free's. */

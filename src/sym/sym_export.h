@@ -1,6 +1,6 @@
 /*
  * src/sym/sym_export.h - sym's interface to the modules above it beyond
- * the public expression API (docs/design.md, "Architecture"), in two parts.
+ * the public expression API (docs/design.md, "Architecture"), in three parts.
  * Internal (prefix qd__), not public: each has one client, which builds a
  * public feature on it.
  *
@@ -29,6 +29,13 @@
  * read (the expression reader, read.c, and the model files' parser,
  * model/expr.c), stricter than the constructors the library uses inside,
  * where an exact 0^q can arise from a substitution and stays a node.
+ *
+ * 3. For src/sim's right-hand side of (q, q'): a program whose outputs are
+ * a mass matrix M (n*n, row-major) and f (n) jitted together with the
+ * solve of M x = f (prog_jit.c, modules/llvm.c): one call where the
+ * interpreter's path makes an evaluation, three copies and
+ * qd__num_solve_spd, which on small systems cost more than the program
+ * (issue 34: the double pendulum at --native's speed).
  */
 #ifndef QD_SYM_SYM_EXPORT_H
 #define QD_SYM_SYM_EXPORT_H
@@ -91,5 +98,21 @@ const qd_expr *qd__pow_written(qd_ctx *ctx, const qd_expr *b, const qd_expr *e);
 /* atan2(y, x) as written: atan2(0, 0) with exact zeros, which has no value,
  * is refused (QD_ERR_DIVZERO); else qd_fn2. */
 const qd_expr *qd__atan2_written(qd_ctx *ctx, const qd_expr *y, const qd_expr *x);
+
+/* ---- 3. a program jitted with its mass matrix's solve (prog_jit.c) ------- */
+
+/* The fused function: the program's outputs into out, and when its first
+ * n*n outputs M and next n outputs f pass qd__num_solve_spd's tests (and
+ * solve_mass's: every entry of M finite), x = M^-1 f by that function's
+ * Cholesky, operation for operation, and 1; else 0 and x unspecified, for
+ * the caller's own solve to decide from out. */
+typedef int (*qd__jit_spd_fn)(const double *in, double *out, double *x);
+
+/* The fused function of p for an n-by-n M, tol as qd__num_solve_spd's;
+ * QD_ERR_UNSUPPORTED without the JIT module (the program still runs
+ * interpreted), QD_ERR_ARG when p has fewer than n*n + n outputs. */
+qd_status qd__prog_jit_spd(qd_ctx *ctx, qd_prog *p, size_t n, double tol);
+/* The fused function, or NULL before qd__prog_jit_spd. */
+qd__jit_spd_fn qd__prog_spd(const qd_prog *p);
 
 #endif

@@ -37,7 +37,7 @@ NULLABLE = {
     'qd_codegen_speeds_c': {'h_text'},
     'qd_codegen_model_c': {'h_text', 'prefix'},  # issue 32: as qd_codegen_c's
     'qd_modes_rest_note': {'out'},  # issue 32: NULL asks only whether there is a note
-    'qd_equilibria_find_text': {'near', 'box', 'where'},  # issue 32: options not given
+    'qd_equilibria_find_text': {'guess', 'box', 'where'},  # issue 32: options not given
     'qd_modes_scan_text': {'about', 'where'},  # issue 32: the chosen equilibrium; not wanted
     'qd_zvc_level_read': {'level', 'through', 'at', 'where'},  # issue 32: one of three
     'qd_action_state_read': {'at'},  # issue 32: the model's initial state alone
@@ -74,6 +74,9 @@ NULLABLE = {
     'qd_eval': {'syms', 'vals'},
     'qd_periods_reduce': {'f'},  # no function: the fundamental system alone
     'qd_render_periods': {'f'},
+    'qd_gram_schmidt': {'T'},  # the identity (App. 21 Thm 1)
+    'qd_render_gram': {'x', 'T'},  # no names; the identity
+    'qd_change_vars': {'f'},  # the Jacobian alone
     'qd_field_modes_compute': {'opts'},
     'qd_field_parse': {'diag', 'opts'},
     'qd_free_symbols': {'out'},
@@ -94,7 +97,6 @@ NULLABLE = {
     'qd_metric_print': {'G'},
     'qd_metric_json': {'G'},
     'qd_path_print': {'opts'},
-    'qd_poincare_summary_print': {'prefix'},  # issue 31: poincare --format json
     'qd_poincare_json_begin': {'model', 'names'},
     'qd_json_add_model': {'model'},
     'qd_legendre_inverse_p': {'pdef'},

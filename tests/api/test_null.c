@@ -47,6 +47,7 @@
 #include "qdot/relativity.h"
 #include "qdot/render.h"
 #include "qdot/routh.h"
+#include "qdot/scanplot.h"
 #include "qdot/scatter.h"
 #include "qdot/scene.h"
 #include "qdot/sim.h"
@@ -714,6 +715,35 @@ static void null_conlin(void **state)
     /* pt NULL */
     assert_int_equal(QD_ERR_ARG, qd_conlin_point(F.ctx, F.model, NULL, "q"));
     reset(&F);
+    /* ---- qd_conlin_start */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(NULL, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", NULL));
+    reset(&F);
+    /* e NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, NULL, F.model, (qd_linpoint *)(void *)F.blob, "q", NULL));
+    reset(&F);
+    /* m NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, F.eom, NULL, (qd_linpoint *)(void *)F.blob, "q", NULL));
+    reset(&F);
+    /* pt NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, F.eom, F.model, NULL, "q", NULL));
+    reset(&F);
+    /* about NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, F.eom, F.model, (qd_linpoint *)(void *)F.blob, NULL, NULL));
+    reset(&F);
+    /* choice NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_start(F.ctx, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", NULL));
+    reset(&F);
+    /* ---- qd_conlin_require_ignorable */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_require_ignorable(NULL, NULL, "q"));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_require_ignorable(F.ctx, NULL, "q"));
+    reset(&F);
+    /* names NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_require_ignorable(F.ctx, NULL, NULL));
+    reset(&F);
     /* ---- qd_conlin_scan_run */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_conlin_scan_run(NULL, F.eom, F.model, (qd_linpoint *)(void *)F.blob, "q", "q", "q", 1, 1, 1, (qd_conlin_scan *)(void *)F.blob));
@@ -753,6 +783,16 @@ static void null_conlin(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_conlin_render(F.ctx, NULL, NULL, (qd_ss_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_conlin_modes_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_modes_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_modes_print(F.ctx, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_modes_print(F.ctx, NULL, false, NULL));
     reset(&F);
     /* ---- qd_conlin_needed */
     /* e NULL */
@@ -2019,6 +2059,60 @@ static void null_form(void **state)
     /* w NULL */
     qd_periods_vectors_free(NULL);
     reset(&F);
+    /* ---- qd_gram_schmidt */
+    /* ctx NULL */
+    assert_null(qd_gram_schmidt(NULL, 1, (const qd_expr * const *)F.e, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* a NULL */
+    assert_null(qd_gram_schmidt(F.ctx, 1, (const qd_expr * const *)F.e, 1, NULL));
+    reset(&F);
+    /* ---- qd_gram_free */
+    /* g NULL */
+    qd_gram_free(NULL);
+    reset(&F);
+    /* ---- qd_change_vars */
+    /* ctx NULL */
+    assert_null(qd_change_vars(NULL, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_change_vars(F.ctx, F.q, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* y NULL */
+    assert_null(qd_change_vars(F.ctx, F.q, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* map NULL */
+    assert_null(qd_change_vars(F.ctx, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_change_free */
+    /* c NULL */
+    qd_change_free(NULL);
+    reset(&F);
+    /* ---- qd_change_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_change_read(NULL, "q", 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_change_read(F.ctx, NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_change_read(F.ctx, "q", 1, NULL, (const qd_expr * *)F.e));
+    reset(&F);
+    /* map NULL */
+    assert_int_equal(QD_ERR_ARG, qd_change_read(F.ctx, "q", 1, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_qform_positive_read */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_positive_read(NULL, "q", (const qd_expr * *)F.e, 1, F.z));
+    reset(&F);
+    /* text NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_positive_read(F.ctx, NULL, (const qd_expr * *)F.e, 1, F.z));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_positive_read(F.ctx, "q", NULL, 1, F.z));
+    reset(&F);
+    /* n NULL */
+    assert_int_equal(QD_ERR_ARG, qd_qform_positive_read(F.ctx, "q", (const qd_expr * *)F.e, 1, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -2648,13 +2742,6 @@ static void null_lyapunov(void **state)
     reset(&F);
     /* opts NULL */
     assert_int_equal(QD_ERR_ARG, qd_poincare_run(F.sim, NULL, NULL, NULL));
-    reset(&F);
-    /* ---- qd_poincare_summary_print */
-    /* r NULL */
-    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", &F.buf));
-    reset(&F);
-    /* out NULL */
-    assert_int_equal(QD_ERR_ARG, qd_poincare_summary_print(NULL, (qd_sim_method){0}, "q", NULL));
     reset(&F);
     /* ---- qd_poincare_json_begin */
     /* j NULL */
@@ -5065,6 +5152,26 @@ static void null_render(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_periods(F.ctx, F.q, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
     reset(&F);
+    /* ---- qd_render_gram */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* g NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_gram(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_change */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_change(NULL, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_change(F.ctx, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_change(F.ctx, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
     /* ---- qd_render_impulse */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_impulse(NULL, F.model, NULL, (qd_render_format){0}, &F.buf));
@@ -5254,6 +5361,27 @@ static void null_routh(void **state)
     reset(&F);
     /* n NULL */
     assert_int_equal(QD_ERR_ARG, qd_routh_ignore_read(F.ctx, F.model, F.eom, "q", (const qd_expr * *)F.e, 1, NULL, (const char * *)F.names));
+    reset(&F);
+    teardown(&F);
+}
+
+static void null_scanplot(void **state)
+{
+    (void)state;
+    static fixture F;
+    setup(&F);
+    /* ---- qd_conlin_scan_plot */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_plot(NULL, NULL, "q", "q", NULL));
+    reset(&F);
+    /* s NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_plot(F.ctx, NULL, "q", "q", NULL));
+    reset(&F);
+    /* name NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_plot(F.ctx, NULL, NULL, "q", NULL));
+    reset(&F);
+    /* title NULL */
+    assert_int_equal(QD_ERR_ARG, qd_conlin_scan_plot(F.ctx, NULL, "q", NULL, NULL));
     reset(&F);
     teardown(&F);
 }
@@ -5817,6 +5945,10 @@ static void null_sim(void **state)
     /* ---- qd_sim_constraint_error */
     /* s NULL */
     assert_true(isnan(qd_sim_constraint_error(NULL, 1)));
+    reset(&F);
+    /* ---- qd_sim_initial_solved */
+    /* s NULL */
+    assert_true(qd_sim_initial_solved(NULL, 1) == 0);
     reset(&F);
     /* ---- qd_sim_columns */
     /* s NULL */
@@ -7402,6 +7534,7 @@ int main(void)
         cmocka_unit_test(null_relativity),
         cmocka_unit_test(null_render),
         cmocka_unit_test(null_routh),
+        cmocka_unit_test(null_scanplot),
         cmocka_unit_test(null_scatter),
         cmocka_unit_test(null_scene),
         cmocka_unit_test(null_sim),

@@ -143,10 +143,20 @@ def pendulum(qdot, d):
               close(d_["B"][1][0], 1 / 1.5) and close(d_["A"][1][0], -G / L), str(d_))
     # the user's independent coordinate y cannot parametrize the circle at the bottom
     rc, out, err = run(qdot, "linearize", xy, "--about", "x = 0, y = -2", "--independent", "y")
-    check("independent y refused at the bottom", rc == 2 and "choose" in err, err)
-    # x at a point off the vertical: the dependent y solved there (y = -sqrt(l^2 - x^2))
-    rc, out, err = run(qdot, "linearize", xy, "--about", "x = 0.5, y = -1.9")
-    check("not an equilibrium refused", rc == 2 and "not an equilibrium" in err, err)
+    check("independent y refused at the bottom, x offered",
+          rc == 2 and "--independent" in err and "e.g. --independent \"x, x'\"" in err, err)
+    # x at a point off the vertical, at rest: the dependent y solved there (y = -sqrt(l^2 -
+    # x^2)) and x' = (0, x'') the affine term, x'' = -g sin(th) cos(th) (th the angle from the
+    # bottom: x = l sin th; Desloge ch. 62's pendulum, th'' = -(g/l) sin th, at th' = 0), and
+    # no verdict: the point is no steady motion
+    rc, out, err = run(qdot, "linearize", xy, "--about", "x = 0.5, y = -1.9", "--format", "json")
+    d_ = json.loads(out) if rc == 0 else {}
+    sth = 0.5 / L
+    check("off the vertical: y solved, x'' = -g sin cos, not steady",
+          rc == 0 and close(d_["point"]["y"], -math.sqrt(L * L - 0.25)) and
+          abs(d_["xdot0"][0][0]) < 1e-14 and
+          close(d_["xdot0"][0][1], -G * sth * math.sqrt(1 - sth * sth)) and
+          d_["verdict"] == "not steady" and d_["stable"] is None, out + err)
     rc, out, err = run(qdot, "modes", xy, "--independent", "x, y")
     check("independent count refused", rc == 2 and "name exactly 1" in err, err)
     rc, out, err = run(qdot, "modes", th, "--independent", "th")

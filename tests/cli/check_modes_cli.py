@@ -258,7 +258,7 @@ def usage(qdot):
     check("usage about", rc == 2 and "unknown name" in err, err)
     rc, out, err = run(qdot, "modes", str(EX / "double_pendulum.qd"), "--at-equilibrium", "9")
     check("usage eq index", rc == 2, err)
-    rc, out, err = run(qdot, "equilibria", str(EX / "rod_elastic_string.qd"), "--near",
+    rc, out, err = run(qdot, "equilibria", str(EX / "rod_elastic_string.qd"), "--guess",
                        "r=1.1, phi=0.1, theta=0.1")
     check("near", rc == 0 and "r = 1.1666666666" in out, out + err)
     rc, out, err = run(qdot, "equilibria", str(EX / "double_pendulum.qd"), "--box",

@@ -24,6 +24,9 @@ of the code under test:
   - a run with a singular mass matrix is recorded in its row, the sweep
     goes on (exit 0);
   - --format json holds the same numbers as the CSV (NaN as null);
+  - --map is titled by the model's name, not its path: the same model given
+    with its directory and from inside it draws byte-identical PNGs, and
+    the same text under another name a different one;
   - bad grids (N = 0, A > B with N > 1, unknown and duplicate names,
     malformed text), unknown measures and missing options exit 2.
 Prints "N passed, N failed"; exit 1 on failure.
@@ -265,6 +268,28 @@ def errors(build, tmp):
     check("error event without --event", r.returncode == 2 and "--event" in r.stderr, r.stderr)
 
 
+def map_title(build, tmp):
+    where = tmp / "maps"
+    where.mkdir()
+    for name in ("osc.qd", "spring.qd"):
+        (where / name).write_text(OSC)
+    exe = str(Path(build).resolve() / "qdot")
+
+    def draw(model, png, cwd):
+        r = subprocess.run([exe, "sweep", model, "--grid", "m=0.5:2:3, k=1:4:3", "--t-end", "1",
+                            "--measure", "final", "--map", png, "--map-measure", "final_x"],
+                           capture_output=True, text=True, timeout=300, cwd=str(cwd))
+        if r.returncode != 0:
+            raise RuntimeError("qdot sweep --map: %s" % r.stderr)
+        return Path(cwd, png).read_bytes()
+
+    with_dir = draw(str(where / "osc.qd"), str(tmp / "with_dir.png"), tmp)
+    inside = draw("osc.qd", "inside.png", where)
+    other = draw("spring.qd", "other.png", where)
+    check("map title: the model's name, not its directory", with_dir == inside)
+    check("map title: another name, another title", other != inside)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
@@ -277,7 +302,7 @@ def main():
                 part(args.build)
             except Exception as exc:
                 check(part.__name__, False, "%s: %s" % (type(exc).__name__, exc))
-        for part in (oscillator, methods, lyapunov, listed, failure, errors):
+        for part in (oscillator, methods, lyapunov, listed, failure, errors, map_title):
             try:
                 part(args.build, tmp)
             except Exception as exc:

@@ -318,6 +318,31 @@ def ranges(qdot):
           a.stderr + b.stderr)
 
 
+def points(qdot, names):
+    """One name for "the point" (issue 31): --at, --about, --guess and --initial,
+    each only where docs/cli.md's rule says, and no other spelling (--near was
+    equilibria's --guess)."""
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "cli.md").read_text()
+    m = re.search(r"A point is named by one of four options.*?\n\n", doc, re.S)
+    check("docs: the rule for the point's options", m is not None)
+    rule = " ".join(m.group(0).split()) if m else ""
+    where = {}
+    for opt in ("--at", "--about", "--guess", "--initial"):
+        part = re.search(r"`%s` [^(]*\(([^)]*)\)" % opt, rule)
+        check("docs: %s has its commands" % opt, part is not None, rule)
+        where[opt] = set(re.findall(r"[a-z][a-z-]+", part.group(1))) if part else set()
+    for c in names:
+        h = run(qdot, c, "--help").stdout
+        have = set(re.findall(r"^\s+(--(?:at|about|guess|initial|near|point|from-state))\s",
+                              h, re.M))
+        check("%s --help: no --near (it is --guess)" % c, "--near" not in have, h)
+        for opt in have - {"--near"}:
+            check("%s %s: as the docs' rule says" % (c, opt), c in where.get(opt, ()),
+                  "%s not among %s" % (c, sorted(where.get(opt, ()))))
+    r = run(qdot, "equilibria", "m.qd", "--near", "x=1")
+    check("equilibria --near: the new name said", "--near is now --guess" in r.stderr, r.stderr)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
@@ -329,6 +354,7 @@ def main():
         (t / "massless.qd").write_text(MASSLESS)
         (t / "bad.qd").write_text("coordinates q\nT = q'^2/2 +\n")
         helps(qdot, commands(qdot))
+        points(qdot, commands(qdot))
         vocabulary(qdot, t)
         stable(qdot, t)
         exits(qdot, t)

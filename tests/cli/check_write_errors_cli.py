@@ -187,6 +187,50 @@ def directories(qdot, osc, tmp):
           ("cannot read %s: is a directory" % dcsv) in r.stderr, repr(r.stderr))
 
 
+def out_option(qdot, osc, tmp):
+    """-o FILE (issue 31: -o and --out everywhere): every command that prints
+    writes to FILE exactly what it prints to standard output, and nothing to
+    standard output; a full disk is said with FILE's name."""
+    for args in commands(osc):
+        if args[0].startswith("--") or args[0] == "codegen" or "--help" in args:
+            continue  # the program's own help; codegen's -o is a directory
+        if "write the rows to FILE" in run(qdot, [args[0], "--help"], subprocess.PIPE).stdout:
+            continue  # simulate's rows (files_full); its summary stays on standard output
+        name = " ".join(str(a) for a in args[:2])
+        plain = run(qdot, args, subprocess.PIPE)
+        f = tmp / "out.txt"
+        if f.exists():
+            f.unlink()
+        r = run(qdot, args + ["-o", f], subprocess.PIPE)
+        check("%s -o FILE: same exit" % name, r.returncode == plain.returncode,
+              "exit %d, plain %d %r" % (r.returncode, plain.returncode, r.stderr[-300:]))
+        check("%s -o FILE: nothing on standard output" % name, r.stdout == "", repr(r.stdout[:200]))
+        check("%s -o FILE: FILE holds the output" % name,
+              f.exists() and f.read_text() == plain.stdout and plain.stdout != "",
+              repr((f.read_text() if f.exists() else None, plain.stdout[:200])))
+        full = run(qdot, args + ["-o", "/dev/full"], subprocess.PIPE)
+        check("%s -o /dev/full: exit 1" % name, full.returncode == 1,
+              "exit %d %r" % (full.returncode, full.stderr[-300:]))
+        check("%s -o /dev/full: says so" % name,
+              "cannot write /dev/full: " + ENOSPC in full.stderr, repr(full.stderr[-300:]))
+    # every command's help lists it
+    top = run(qdot, ["--help"], subprocess.PIPE).stdout
+    names = [ln.split()[0] for ln in top.split("commands:")[1].split("\n\n")[0].splitlines()
+             if ln.strip()]
+    check("qdot --help lists commands", len(names) > 20, repr(names))
+    for c in names:
+        h = run(qdot, [c, "--help"], subprocess.PIPE).stdout
+        check("%s --help: -o, --out" % c, "-o, --out" in h, repr(h[-300:]))
+    # a file that cannot be created is bad input, and no run starts
+    r = run(qdot, ["eom", osc, "-o", tmp / "no" / "such" / "dir"], subprocess.PIPE)
+    check("eom -o NODIR/FILE: exit 2", r.returncode == 2, "exit %d %r" % (r.returncode, r.stderr))
+    # "-" is standard output
+    r = run(qdot, ["eom", osc, "-o", "-"], subprocess.PIPE)
+    plain = run(qdot, ["eom", osc], subprocess.PIPE)
+    check("eom -o -: standard output", r.returncode == 0 and r.stdout == plain.stdout,
+          repr(r.stdout[:200]))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", required=True)
@@ -203,6 +247,7 @@ def main():
         stdout_closed(qdot, osc)
         files_full(qdot, osc, tmp)
         directories(qdot, osc, tmp)
+        out_option(qdot, osc, tmp)
     print("%d passed, %d failed" % (results["passed"], results["failed"]))
     return 1 if results["failed"] else 0
 

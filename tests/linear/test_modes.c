@@ -15,7 +15,13 @@
  *     axis, L4 at (1/2 - mu, sqrt 3/2) stable for mu = 0.01 and unstable
  *     for mu = 0.1 (27 mu (1 - mu) < 1; Desloge ch. 62), a maximum of the
  *     effective potential either way;
- *   a damped oscillator: s = -c/2m +- i sqrt(k/m - c^2/4m^2).
+ *   a damped oscillator: s = -c/2m +- i sqrt(k/m - c^2/4m^2);
+ *   three pendulums whose angles springs couple, V = -g sum cos th_i +
+ *     k/2 sum (th_{i+1} - th_i)^2: no angle is periodic (a turn by 2 pi
+ *     stretches the springs), so every equilibrium listed solves
+ *     g sin th_i = k (th_{i+1} - 2 th_i + th_{i-1}) (ends: one spring) to
+ *     round-off (issue 33: roots folded into (-pi, pi] were listed with
+ *     residuals 2 pi k).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -56,6 +62,12 @@ static const double PI = 3.14159265358979323846;
     "coordinates x, y\nparameters mu = 0.01\n"                                                 \
     "T = 1/2*((x' - y)^2 + (y' + x)^2)\n"                                                      \
     "V = -(1 - mu)/sqrt((x + mu)^2 + y^2) - mu/sqrt((x - 1 + mu)^2 + y^2)\n"
+
+#define SPRUNG_CHAIN                                                                           \
+    "coordinates th1, th2, th3\nparameters g = 9.81, k = 2\n"                                  \
+    "particle 1 at (sin(th1), -cos(th1))\nparticle 1 at (sin(th2), -cos(th2))\n"              \
+    "particle 1 at (sin(th3), -cos(th3))\n"                                                    \
+    "V = -g*(cos(th1) + cos(th2) + cos(th3)) + k/2*((th2 - th1)^2 + (th3 - th2)^2)\n"
 
 /* The model's coordinates at q, parameters at their values. */
 typedef struct point {
@@ -275,8 +287,65 @@ static void test_newton(void **state) {
     qd_equilibria_free(&eq);
 }
 
+/* Which coordinates are angles: periodic ones only. */
+static void angles_of(void **state, const char *text, size_t n, const bool *want) {
+    qt_system *s = qt_system_derive(state, text, false);
+    bool angle[4];
+    double lo[4], hi[4];
+    assert_int_equal(qd_equilibria_default_box(s->ctx, s->eom, s->model, angle, lo, hi), QD_OK);
+    for (size_t j = 0; j < n; j++) {
+        assert_int_equal(angle[j], want[j]);
+        assert_true(want[j] ? hi[j] == PI : hi[j] == 10);
+    }
+}
+
+static void test_angles(void **state) {
+    const bool both[2] = {true, true}, none[3] = {false, false, false};
+    angles_of(state, DOUBLE_PENDULUM, 2, both);
+    qt_system_teardown(state);
+    angles_of(state, SPRUNG_CHAIN, 3, none);
+    qt_system_teardown(state);
+    /* cos(th/2) has period 4 pi; sin(2 th) and cos(th - phi) are 2 pi-periodic in each */
+    const bool half[2] = {false, true};
+    angles_of(state, "coordinates th, phi\nT = th'^2/2 + phi'^2/2\n"
+                     "V = -cos(th/2) - sin(2*phi) - cos(th - phi)/10\n", 2, half);
+    qt_system_teardown(state);
+    /* a bare appearance beside a periodic one: th*sin(th) */
+    const bool bare[1] = {false};
+    angles_of(state, "coordinates th\nT = th'^2/2\nV = th*sin(th)\n", 1, bare);
+}
+
+static void test_sprung_chain(void **state) {
+    qt_system *s = qt_system_derive(state, SPRUNG_CHAIN, false);
+    point p;
+    at(s, NULL, &p);
+    qd_equilibria eq;
+    assert_int_equal(qd_equilibria_find(s->ctx, s->eom, s->model, p.n, p.syms, p.vals, NULL, &eq),
+                     QD_OK);
+    assert_true(eq.count >= 3);
+    const double g = 9.81, k = 2;
+    bool wound = false, rest = false;
+    for (size_t i = 0; i < eq.count; i++) {
+        const double *th = eq.pts[i].q;
+        /* dV/dth_i by hand */
+        double F[3] = {g * sin(th[0]) - k * (th[1] - th[0]),
+                       g * sin(th[1]) + k * (th[1] - th[0]) - k * (th[2] - th[1]),
+                       g * sin(th[2]) + k * (th[2] - th[1])};
+        for (size_t j = 0; j < 3; j++)
+            assert_true(fabs(F[j]) < 1e-9);
+        wound = wound || fabs(th[0]) > PI || fabs(th[2]) > PI;
+        rest = rest || (fabs(th[0]) + fabs(th[1]) + fabs(th[2]) < 1e-12 &&
+                        eq.pts[i].kind == QD_EQ_MINIMUM);
+    }
+    assert_true(rest);
+    assert_true(wound); /* an end pendulum turned past pi, held by the spring */
+    qd_equilibria_free(&eq);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test_teardown(test_angles, qt_system_teardown),
+        cmocka_unit_test_teardown(test_sprung_chain, qt_system_teardown),
         cmocka_unit_test_teardown(test_double_pendulum, qt_system_teardown),
         cmocka_unit_test_teardown(test_ring, qt_system_teardown),
         cmocka_unit_test_teardown(test_rod, qt_system_teardown),

@@ -22,7 +22,18 @@
  *   a double pendulum of point masses hung from the origin: two rods (the
  *     origin to bob 1, bob 1 to bob 2) and the pivot; no rod from the
  *     origin to bob 2, whose distance changes at second order only about
- *     the hanging equilibrium.
+ *     the hanging equilibrium;
+ *   two pendulums hung from (0, 0) and (d, 0) with a spring between the
+ *     bobs (Goldstein ch. 6, the coupled pendulums; Desloge ch. 66): the
+ *     spring, a rod from each pivot (the second at (d, 0)) and no spring
+ *     to a wall (gravity, m g y in V, holds the bobs as a wall's spring
+ *     would in K0, but is linear in the positions); in the PNG the spring's
+ *     ink along the middle of the bobs' segment in each mode;
+ *   a bob tied by a horizontal spring to a wall point: the spring to a
+ *     wall across x, and the rod from the pivot;
+ *   the spring pendulum (examples/spring_pendulum.qd, Goldstein ch. 1
+ *     Ex. 24: V = m g y + k/2 (r - l0)^2): the spring from the pivot at the
+ *     origin to the bob, no rod, no wall.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -69,6 +80,21 @@
     "coordinates th1, th2\nparameters m1 = 1.2, m2 = 0.7, l1 = 1.1, l2 = 0.8, g = 9.81\n"      \
     "rB = l1*(sin(th1), -cos(th1))\nrC = rB + l2*(sin(th2), -cos(th2))\n"                      \
     "particle m1 at rB\nparticle m2 at rC\nV = m1*g*rB.y + m2*g*rC.y\n"
+
+#define COUPLED                                                                                \
+    "coordinates th1, th2\nparameters m = 1, g = 9.81, l = 1, k = 2, d = 1.5\n"                 \
+    "P1 = (l*sin(th1), -l*cos(th1))\nP2 = (d + l*sin(th2), -l*cos(th2))\n"                      \
+    "particle m at P1\nparticle m at P2\n"                                                      \
+    "V = m*g*(P1.y + P2.y) + k/2*(norm(P2 - P1) - d)^2\n"
+
+#define BOB_WALL                                                                               \
+    "coordinates th\nparameters m = 1, g = 9.81, l = 1, k = 5, L = 1.5\n"                       \
+    "P = (l*sin(th), -l*cos(th))\nparticle m at P\n"                                           \
+    "V = m*g*P.y + k/2*(sqrt((P.x + L)^2 + (P.y + l)^2) - L)^2\n"
+
+#define SPRING_PENDULUM                                                                        \
+    "coordinates r, theta\nparameters m = 0.4, k = 12, l0 = 1, g = 9.81\n"                     \
+    "rb = r*(sin(theta), -cos(theta))\nparticle m at rb\nV = m*g*rb.y + k/2*(r - l0)^2\n"
 
 typedef struct point {
     size_t n;
@@ -312,6 +338,84 @@ static void test_pendulum_rods(void **state) {
     qd_modes_result_free(&res);
 }
 
+static image read_png(const char *path) {
+    image im = {cairo_image_surface_create_from_png(path), 0, 0, 0, NULL};
+    assert_int_equal(cairo_surface_status(im.s), CAIRO_STATUS_SUCCESS);
+    im.w = cairo_image_surface_get_width(im.s);
+    im.h = cairo_image_surface_get_height(im.s);
+    im.stride = cairo_image_surface_get_stride(im.s);
+    im.data = cairo_image_surface_get_data(im.s);
+    return im;
+}
+
+static void test_coupled_pendulums(void **state) {
+    qt_system *s = qt_system_derive(state, COUPLED, false);
+    const double q[2] = {0, 0};
+    point p;
+    at(s, q, &p);
+    qd_modes_result res;
+    qd_modes_picture pic;
+    picture(s, &p, &res, &pic);
+    assert_true(joined(&pic, 0, 1, QD_MODES_SPRING));
+    assert_true(pic.pivot && joined(&pic, 2, 0, QD_MODES_ROD)); /* from the origin */
+    assert_int_equal(pic.nwalls, 1);                             /* the pivot at (d, 0) */
+    assert_int_equal(pic.wall_axis[0], 3);
+    assert_true(fabs(pic.wall[0] - 1.5) < 1e-6 && fabs(pic.wall[1]) < 1e-6);
+    assert_true(joined(&pic, 1, 3, QD_MODES_ROD));
+    assert_int_equal(pic.nlinks, 3);
+    qd_plot *plot = NULL;
+    assert_int_equal(qd_modes_plot(s->ctx, s->eom, s->model, p.n, p.syms, p.vals, &res,
+                                   "coupled", &plot), QD_OK);
+    assert_int_equal(qd_plot_write(plot, "test_modes_figure_coupled.png"), QD_OK);
+    image im = read_png("test_modes_figure_coupled.png");
+    for (size_t j = 0; j < res.n; j++) {
+        const double *mv = pic.moved + j * 6;
+        for (double f = 0.3; f <= 0.7 + 1e-9; f += 0.05) { /* clear of the dots */
+            double px, py;
+            assert_true(qd_plot_to_pixel(plot, j, mv[0] + f * (mv[3] - mv[0]),
+                                         mv[1] + f * (mv[4] - mv[1]), &px, &py));
+            assert_true(ink_near(&im, px, py));
+        }
+    }
+    cairo_surface_destroy(im.s);
+    qd_plot_free(plot);
+    qd_modes_picture_free(&pic);
+    qd_modes_result_free(&res);
+}
+
+static void test_bob_wall(void **state) {
+    qt_system *s = qt_system_derive(state, BOB_WALL, false);
+    const double q[1] = {0};
+    point p;
+    at(s, q, &p);
+    qd_modes_result res;
+    qd_modes_picture pic;
+    picture(s, &p, &res, &pic);
+    assert_true(pic.pivot && joined(&pic, 1, 0, QD_MODES_ROD));
+    assert_int_equal(pic.nwalls, 1);
+    assert_int_equal(pic.wall_axis[0], 0); /* across x: the spring is horizontal */
+    assert_true(joined(&pic, 0, 2, QD_MODES_SPRING));
+    assert_int_equal(pic.nlinks, 2);
+    qd_modes_picture_free(&pic);
+    qd_modes_result_free(&res);
+}
+
+static void test_spring_pendulum(void **state) {
+    qt_system *s = qt_system_derive(state, SPRING_PENDULUM, false);
+    const double q[2] = {1 + 0.4 * 9.81 / 12, 0}; /* r = l0 + m g / k */
+    point p;
+    at(s, q, &p);
+    qd_modes_result res;
+    qd_modes_picture pic;
+    picture(s, &p, &res, &pic);
+    assert_true(pic.pivot);
+    assert_int_equal(pic.nlinks, 1);
+    assert_true(joined(&pic, 1, 0, QD_MODES_SPRING));
+    assert_int_equal(pic.nwalls, 0);
+    qd_modes_picture_free(&pic);
+    qd_modes_result_free(&res);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_teardown(test_ring_links, qt_system_teardown),
@@ -320,6 +424,9 @@ int main(void) {
         cmocka_unit_test_teardown(test_triatomic_links, qt_system_teardown),
         cmocka_unit_test_teardown(test_walled_chain, qt_system_teardown),
         cmocka_unit_test_teardown(test_pendulum_rods, qt_system_teardown),
+        cmocka_unit_test_teardown(test_coupled_pendulums, qt_system_teardown),
+        cmocka_unit_test_teardown(test_bob_wall, qt_system_teardown),
+        cmocka_unit_test_teardown(test_spring_pendulum, qt_system_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

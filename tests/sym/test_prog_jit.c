@@ -3,7 +3,10 @@
  * the interpreter's numbers bit for bit: every operation the program
  * knows (the opcodes of src/sym/prog_int.h, sums and products of every
  * length, signs of zero, NaN and infinities), random programs over shared
- * subexpressions, and a program evaluated from several threads at once.
+ * subexpressions, and a program evaluated from several threads at once;
+ * the mass matrix's program jitted with its Cholesky solve
+ * (qd__prog_jit_spd) gives qd__num_solve_spd's solution bit for bit and
+ * fails exactly where solve_mass would go on to its own decision.
  * Without the module (a build without LLVM) the test is a skip (77).
  */
 #include <stdarg.h>
@@ -19,6 +22,8 @@
 #include <string.h>
 
 #include "qdot/qdot.h"
+#include "num/num.h"
+#include "sym/sym_export.h"
 #include "util/randexpr.h"
 
 #define SEED 20261204u
@@ -163,6 +168,105 @@ static void test_threads(void **state) {
     qd_ctx_free(ctx);
 }
 
+/* The interpreter's path of src/sim/system.c's solve_mass up to the LU:
+ * every entry of M finite, then qd__num_solve_spd on copies. */
+static bool c_solve(size_t n, const double *M, const double *f, double *x) {
+    for (size_t k = 0; k < n * n; k++)
+        if (!isfinite(M[k]))
+            return false;
+    double A[64];
+    memcpy(A, M, n * n * sizeof *A);
+    memcpy(x, f, n * sizeof *x);
+    return qd__num_solve_spd(n, A, x, 1e-10);
+}
+
+/* M = B B^T + shift I (row-major), f random: SPD for shift > 0 and
+ * indefinite for a shift below minus B's smallest singular value squared. */
+static void system_at(qt_rng *rng, size_t n, double shift, double *M, double *f) {
+    double B[64];
+    for (size_t k = 0; k < n * n; k++)
+        B[k] = qt_uniform(rng, -1, 1);
+    for (size_t i = 0; i < n; i++) {
+        f[i] = qt_uniform(rng, -3, 3);
+        for (size_t j = 0; j < n; j++) {
+            double s = i == j ? shift : 0;
+            for (size_t k = 0; k < n; k++)
+                s += B[i * n + k] * B[j * n + k];
+            M[i * n + j] = s;
+        }
+    }
+}
+
+/* The fused program of an n-by-n system whose outputs are its inputs (M,
+ * then f; the extra output 2*f[0] after them, as acc has none but may),
+ * against c_solve on SPD, indefinite, nearly singular, zero, huge and
+ * non-finite matrices: the same flag, and where it is set the same x. */
+static void test_spd_solve(void **state) {
+    (void)state;
+    qt_rng rng = {SEED + 7};
+    for (size_t n = 1; n <= 7; n++) {
+        qd_ctx *ctx = qd_ctx_new();
+        size_t nin = n * n + n;
+        const qd_expr *in[56], *out[57];
+        for (size_t k = 0; k < nin; k++) {
+            char name[16];
+            snprintf(name, sizeof name, "v%zu", k);
+            out[k] = in[k] = qd_symbol(ctx, name);
+        }
+        out[nin] = qd_mul(ctx, qd_int(ctx, 2), in[n * n]);
+        qd_prog *p = qd_prog_new(ctx, nin, in, nin + 1, out);
+        assert_non_null(p);
+        assert_int_equal(qd__prog_jit_spd(ctx, p, n + 1, 1e-10), QD_ERR_ARG); /* too few outputs */
+        qd_ctx_clear_error(ctx);
+        assert_int_equal(qd__prog_jit_spd(ctx, p, n, 1e-10), QD_OK);
+        qd__jit_spd_fn fn = qd__prog_spd(p);
+        assert_non_null(fn);
+        int agreed_ok = 0, agreed_fail = 0;
+        for (int trial = 0; trial < 200; trial++) {
+            double v[56], o[57], x[8], xc[8];
+            int kind = trial % 10;
+            double shift = kind == 1 ? -(double)n : kind == 2 ? 0 : 0.05 + (double)(trial % 3);
+            system_at(&rng, n, shift, v, v + n * n);
+            if (kind == 2 && n > 1) /* rank one short: a pivot at round-off */
+                for (size_t j = 0; j < n; j++)
+                    v[(n - 1) * n + j] = v[j * n + n - 1] = v[j];
+            if (kind == 3)
+                memset(v, 0, n * n * sizeof *v);
+            if (kind == 4)
+                v[(size_t)trial % (n * n)] = trial % 20 < 10 ? NAN : -INFINITY;
+            if (kind == 5)
+                for (size_t k = 0; k < n * n; k++)
+                    v[k] *= 1e300;
+            if (kind == 6)
+                v[n * n] = NAN; /* f alone not finite: solved, NaN through */
+            if (kind == 7)
+                for (size_t k = 0; k < n * n; k++)
+                    v[k] *= 1e-300;
+            memset(x, 0, sizeof x);
+            int ok = fn(v, o, x);
+            bool okc = c_solve(n, v, v + n * n, xc);
+            assert_int_equal(ok, okc);
+            for (size_t k = 0; k < nin; k++)
+                assert_memory_equal(&o[k], &v[k], sizeof o[k]);
+            double twice = 2 * v[n * n];
+            assert_memory_equal(&o[nin], &twice, sizeof twice);
+            if (ok) {
+                for (size_t k = 0; k < n; k++)
+                    if (memcmp(&x[k], &xc[k], sizeof x[k]) != 0)
+                        fail_msg("n = %zu, trial %d: x[%zu] jitted %a, C %a", n, trial, k, x[k],
+                                 xc[k]);
+                agreed_ok++;
+            } else {
+                agreed_fail++;
+            }
+        }
+        /* both outcomes were exercised at every size */
+        assert_true(agreed_ok > 50 && agreed_fail > 20);
+        qd_prog_free(p);
+        qd_ctx_free(ctx);
+    }
+}
+
 int main(void) {
     /* no module in this build (no LLVM): a skip, with the library's reason */
     qd_ctx *ctx = qd_ctx_new();
@@ -179,6 +283,7 @@ int main(void) {
         cmocka_unit_test(test_operations),
         cmocka_unit_test(test_random),
         cmocka_unit_test(test_threads),
+        cmocka_unit_test(test_spd_solve),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,116 @@
+# python/qdot/appendix.py - the mathematical tools of Desloge's appendices
+# that are not quadratic forms (forms.py): Gram-Schmidt (App. 21).
+"""qdot.gram_schmidt(expr, variables, vectors) or qdot.gram_schmidt(model): the
+orthogonalization of vectors under a form's matrix, or of a model's
+coordinate tangents under its kinetic metric (Desloge App. 21)."""
+
+import json
+
+from ._lib import ffi, lib, new, buf_text, cstr
+from ._core import Error
+
+
+class GramSchmidt:
+    """Vectors orthogonalized (qd_gram_schmidt, Desloge App. 21): vectors
+    (the a's) and orthogonal (the b's), rows of texts; norms (b^T T b);
+    coefficients (a(r)'s components along b(j), j < r); metric (T's rows,
+    None for the identity); euclidean; json() the dict of `qdot form
+    --gram-schmidt --format json` (or `qdot metric --gram-schmidt`), text()
+    its text."""
+
+    __module__ = "qdot"
+
+    def __init__(self, printed):
+        self._printed = printed
+        d = json.loads(printed[1])
+        self.vectors, self.orthogonal, self.norms = d["vectors"], d["orthogonal"], d["norms"]
+        self.coefficients, self.metric, self.euclidean = (d["coefficients"], d["metric"],
+                                                          d["euclidean"])
+
+    def text(self):
+        return self._printed[0]
+
+    def json(self):
+        return json.loads(self._printed[1])
+
+    def __repr__(self):
+        return "GramSchmidt(orthogonal=%r)" % (self.orthogonal,)
+
+
+def _printed(ctx, g, x, T):
+    out = []
+    for fmt in (lib.QD_RENDER_TEXT, lib.QD_RENDER_JSON):
+        buf = new("qd_buf")
+        if lib.qd_render_gram(ctx, g, x, T, fmt, buf) != 0:
+            lib.qd_buf_free(buf)
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        out.append(buf_text(buf))
+    return tuple(out)
+
+
+def _of_model(model):
+    core = model._for("metric")
+    m = lib.qd_metric_new(core.ctx, core.model)
+    if not m:
+        raise core.error()
+    try:
+        n = m.n
+        eye = ffi.new("const qd_expr *[]", [lib.qd_int(core.ctx, int(i // n == i % n))
+                                            for i in range(n * n)])
+        g = lib.qd_gram_schmidt(core.ctx, n, m.g, n, eye)
+        if not g:
+            raise core.error()
+        try:
+            return GramSchmidt(_printed(core.ctx, g, m.q, m.g))
+        finally:
+            lib.qd_gram_free(g)
+    finally:
+        lib.qd_metric_free(m)
+
+
+def gram_schmidt(expr, variables=None, vectors=None):
+    """The vectors (a list of vectors, each a list of model-language texts,
+    one per variable; or the --gram-schmidt text "1, 1, 0; 1, 0, 1")
+    orthogonalized under the matrix of the quadratic form expr in the named
+    variables (`qdot form EXPR --vars ... --gram-schmidt ...`; Thm 1 when
+    it is x^2 + y^2 + ...); or, given a qdot.Model, its coordinate tangents
+    under the kinetic metric g_ij (`qdot metric FILE --gram-schmidt`): a
+    GramSchmidt.  ValueError for a bad variable or vector, qdot.Error for
+    dependent vectors or a null vector of an indefinite form."""
+    if hasattr(expr, "_for"):
+        return _of_model(expr)
+    if variables is None or vectors is None:
+        raise TypeError("gram_schmidt(expr, variables, vectors), or gram_schmidt(model)")
+    if not isinstance(vectors, str):
+        vectors = "; ".join(", ".join(str(c) for c in v) for v in vectors)
+    if isinstance(variables, str):
+        variables = [variables]
+    ctx = lib.qd_ctx_new()
+    if not ctx:
+        raise MemoryError("qdot: out of memory")
+    w = ffi.new("const qd_expr ***")
+    f = g = ffi.NULL
+    try:
+        diag = new("qd_diag")
+        phi = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
+        if not phi:
+            raise Error(ffi.string(diag.message).decode() or "cannot read the form")
+        xs = ffi.new("const qd_expr *[]", max(1, len(variables)))
+        n, s = ffi.new("size_t *"), ffi.new("size_t *")
+        if lib.qd_qform_vars_read(ctx, ", ".join(variables).encode(), xs, len(variables), n) != 0:
+            raise ValueError(cstr(lib.qd_ctx_message(ctx)))
+        if lib.qd_periods_vectors_read(ctx, vectors.encode(), n[0], s, w) != 0:
+            raise ValueError(cstr(lib.qd_ctx_message(ctx)))
+        f = lib.qd_qform_reduce(ctx, phi, n[0], xs)
+        if not f:
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        g = lib.qd_gram_schmidt(ctx, n[0], f.a, s[0], w[0])
+        if not g:
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        return GramSchmidt(_printed(ctx, g, xs, f.a))
+    finally:
+        lib.qd_gram_free(g)
+        lib.qd_qform_free(f)
+        if w[0] != ffi.NULL:
+            lib.qd_periods_vectors_free(w[0])
+        lib.qd_ctx_free(ctx)
