@@ -169,7 +169,8 @@ class Equilibria(list):
 
     def __repr__(self):
         return "<qdot.Equilibria %d: %s>" % (len(self), "; ".join(
-            "%s %s" % (e.kind, ", ".join("%s = %.6g" % kv for kv in e.q.items())) for e in self))
+            "%s%s" % (e.kind + " " if e.kind else "", ", ".join(
+                "%s = %.6g" % kv for kv in e.q.items())) for e in self))
 
     def _repr_html_(self):
         return _equilibria_html(self, "qdot equilibria")

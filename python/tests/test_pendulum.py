@@ -82,7 +82,8 @@ def test_stats_are_the_runs_counts():
                             "energy_balance_error", "surface_work", "initial_moved_q",
                             "initial_moved_qd", "initial_solved", "events_unresolved", "events_unresolved_t",
                             "events_unresolved_spacing", "events_unresolved_event",
-                            "energy_error_steps", "jit", "stop"}
+                            "energy_error_steps", "jit", "initial_solved", "stop"}
+    assert r.stats["initial_solved"] == 0   # no constraint: no velocity solved at the start
     assert r.stop["reason"] == "reached the end time" and r.stop["t"] == 1.0
     assert r.stop["code"] == "end" and r.stop["ok"] is True
     # a fixed step: t_end/dt steps, none rejected, E0 = -m g l cos(theta0)
