@@ -81,7 +81,7 @@ bool qd__mech_nonneg(const qd_expr *x, bool *pos);
  * factor linear in one of them solved for it (r = 0), sin and cos of one
  * (theta = 0 + k pi), any other factor = 0; factors free of q and positive
  * ones left out.  *out is allocated (qd__free), *count entries. */
-qd_status qd__zero_set(qd_ctx *ctx, const qd_expr *det, size_t n, const qd_expr *const *q,
+qd_status qd__mech_zero_set(qd_ctx *ctx, const qd_expr *det, size_t n, const qd_expr *const *q,
                        struct qd_metric_singular **out, size_t *count);
 
 /* ---- constraints ---------------------------------------------------------- */

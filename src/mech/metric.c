@@ -245,10 +245,10 @@ static qd_status chart(qd_ctx *ctx, qd_metric *g) {
     return st;
 }
 
-/* The zeros of det in the coordinates (qd__zero_set, zero_set.c). */
+/* The zeros of det in the coordinates (qd__mech_zero_set, zero_set.c). */
 static qd_status singular_set(qd_ctx *ctx, qd_metric *g, const qd_expr *det) {
     g->sing_of = det;
-    return qd__zero_set(ctx, det, g->n, g->q, &g->sing, &g->nsing);
+    return qd__mech_zero_set(ctx, det, g->n, g->q, &g->sing, &g->nsing);
 }
 
 /* h_i = sqrt(e_ii) (or sqrt(g_ii)) and whether the coordinates are orthogonal. */

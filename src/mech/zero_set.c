@@ -1,6 +1,6 @@
 /*
  * src/mech/zero_set.c - where a Jacobian determinant vanishes, factor by
- * factor (qd__zero_set, mech.h): the singular points of a chart (qdot
+ * factor (qd__mech_zero_set, mech.h): the singular points of a chart (qdot
  * metric's chart, Desloge App. 18) and the places where a change of
  * variables' Jacobian may change sign (qd_change_vars, App. 19).  Moved
  * here from metric.c so both share it.
@@ -123,7 +123,7 @@ bool qd__mech_nonneg(const qd_expr *x, bool *pos) {
 
 /* The zeros of det, factor by factor (powers by their base; factors free
  * of the variables are not zero for the parameters' values). */
-qd_status qd__zero_set(qd_ctx *ctx, const qd_expr *det, size_t n, const qd_expr *const *q,
+qd_status qd__mech_zero_set(qd_ctx *ctx, const qd_expr *det, size_t n, const qd_expr *const *q,
                        qd_metric_singular **out, size_t *count) {
     zs_vars vars = {n, q}, *g = &vars;
     *out = NULL;

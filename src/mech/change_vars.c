@@ -1,5 +1,5 @@
 /*
- * src/form/change.c - a change of variables in an integral (Desloge
+ * src/mech/change_vars.c - a change of variables in an integral (Desloge
  * App. 19; qd_change_vars, qdot/form.h): the Jacobian matrix dx_i/dy_j of
  * x = x(y), its determinant J(x/y), J(y/x) = 1/J(x/y) (App. 18), the sign
  * of J where its form shows it, its zero set (where the region must be
@@ -14,7 +14,7 @@
 #include "base/args.h"
 #include "base/diag.h"
 #include "base/mem.h"
-#include "mech/mech.h"
+#include "mech.h"
 
 void qd_change_free(qd_change *c) {
     if (!c)
@@ -130,7 +130,7 @@ qd_change *qd_change_vars(qd_ctx *ctx, const qd_expr *f, size_t n, const qd_expr
             c->integrand = tidy(ctx, qd_mul(ctx, qd_subs(ctx, f, n, x, c->map), c->absdet));
     }
     if (qd_ctx_status(ctx) == QD_OK && c->det)
-        qd__zero_set(ctx, c->det, n, y, &c->sing, &c->nsing);
+        qd__mech_zero_set(ctx, c->det, n, y, &c->sing, &c->nsing);
     if (qd_ctx_status(ctx) != QD_OK || !c->det || !c->absdet || (f && !c->integrand)) {
         if (qd_ctx_status(ctx) == QD_OK)
             qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory changing variables");
