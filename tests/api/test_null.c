@@ -527,6 +527,39 @@ static void null_canonical(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_gen_result_print(F.ctx, NULL, (qd_gen_type){0}, F.q, NULL, false, NULL));
     reset(&F);
+    /* ---- qd_condensed_new */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, NULL));
+    reset(&F);
+    /* ---- qd_condensed_free */
+    /* c NULL */
+    qd_condensed_free(NULL);
+    reset(&F);
+    /* ---- qd_condensed_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_print(F.ctx, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_print(F.ctx, NULL, false, NULL));
+    reset(&F);
     teardown(&F);
 }
 
