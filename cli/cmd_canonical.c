@@ -107,7 +107,8 @@ static int examine(can_run *r, const can_args *a) {
 }
 
 /* --condensed: Thm 1 of ch. 75 on M^T mu M, with Hamilton's equations
- * r' = mu grad H when the model's H is closed; the exit status as examine's. */
+ * r' = mu grad H when the model's H is closed (qd_phase_condensed); the
+ * exit status as examine's. */
 static int condensed(can_run *r, const can_args *a) {
     qd_ctx *ctx = r->c.ctx;
     int rc = read_list(r, "--Q", a->Q, &r->Q);
@@ -115,15 +116,8 @@ static int condensed(can_run *r, const can_args *a) {
         rc = read_list(r, "--P", a->P, &r->P);
     if (rc != QD_EXIT_OK)
         return rc;
-    const qd_expr *H = NULL;
-    if (qd_phase_ham(ctx, &r->ph, true) == QD_OK)
-        H = r->ph.h->H;
-    else if (qd_ctx_status(ctx) == QD_ERR_NONLINEAR) /* an implicit H: no eq. 14 */
-        qd_ctx_clear_error(ctx);
-    else
-        return failure(r);
     qd_condensed cd;
-    if (qd_condensed_new(ctx, r->ph.n, r->ph.q, r->ph.p, r->Q, r->P, H, &cd) != QD_OK)
+    if (qd_phase_condensed(ctx, &r->ph, r->Q, r->P, &cd) != QD_OK)
         return failure(r);
     qd_buf b = QD_BUF_INIT;
     rc = emit(qd_condensed_print(ctx, &cd, r->json, &b), &b);

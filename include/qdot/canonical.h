@@ -328,6 +328,13 @@ QD_API qd_status qd_condensed_new(qd_ctx *ctx, size_t n, const qd_expr *const *q
                                   const qd_expr *const *P, const qd_expr *H,
                                   qd_condensed *out);
 QD_API void qd_condensed_free(qd_condensed *c);
+/* The same on a model's phase space ph, with its H when H is closed
+ * (qd_phase_ham; an implicit H, QD_ERR_NONLINEAR, leaves eq. 14 out): what
+ * `qdot canonical --condensed` and Python's qdot.condensed compute.  The
+ * errors of qd_phase_ham (about a statement of the model) and of
+ * qd_condensed_new. */
+QD_API qd_status qd_phase_condensed(qd_ctx *ctx, qd_phase *ph, const qd_expr *const *Q,
+                                    const qd_expr *const *P, qd_condensed *out);
 
 /* c written out, appended to out (what `qdot canonical --condensed` prints):
  * text r and R, lambda and mu, Hamilton's equations r' = mu grad H (when

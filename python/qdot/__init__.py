@@ -25,7 +25,8 @@ from .relativity import lorentz, proper_time, collide
 from .forms import (Homogeneity, Periods, QuadraticForm, homogeneity, periods, quadratic_form,
                     tour)
 from .field import Field
-from .appendix import GramSchmidt, gram_schmidt, ChangeOfVariables, change_of_variables
+from .appendix import (GramSchmidt, gram_schmidt, ChangeOfVariables, change_of_variables,
+                       condensed)
 from .kernel import Expr, Code, parse, diff, expand, simplify, print_expr
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
@@ -34,5 +35,6 @@ __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "O
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Homogeneity",
            "homogeneity", "Periods", "periods", "tour", "Field",
            "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr",
-           "GramSchmidt", "gram_schmidt", "ChangeOfVariables", "change_of_variables"]
+           "GramSchmidt", "gram_schmidt", "ChangeOfVariables", "change_of_variables",
+           "condensed"]
 from ._lib import VERSION as __version__

@@ -5,7 +5,8 @@
 orthogonalization of vectors under a form's matrix, or of a model's
 coordinate tangents under its kinetic metric (Desloge App. 21);
 qdot.change_of_variables(expr, variables, change, new): the Jacobian of
-x = x(y) and the integrand f(x(y)) |J| (App. 19)."""
+x = x(y) and the integrand f(x(y)) |J| (App. 19); qdot.condensed(model, Q, P):
+a map in the condensed notation of ch. 75."""
 
 import json
 
@@ -200,3 +201,31 @@ def change_of_variables(expr, variables, change, new, positive=None):
     finally:
         lib.qd_change_free(c)
         lib.qd_ctx_free(ctx)
+
+
+def condensed(model, Q, P):
+    """The map (q, p) -> (Q, P) of a qdot.Model in Desloge's condensed
+    notation (ch. 75; qd_phase_condensed, `qdot canonical FILE --Q ... --P
+    ... --condensed`): a qdot.Output with the keys of its JSON: r, R,
+    lambda, mu, grad_H and r_dot (Hamilton's equations r' = mu grad H, None
+    for an implicit H), jacobian (dR/dr), lagrange (M^T mu M), jacobian_det,
+    verdict ("canonical", "scaled", "not canonical", "undecided"), scale,
+    entry, value, should_be and the zero test's keys.  Q, P: "Q1, ..." text
+    or a list, as Model.canonical takes them; a "no" is an answer."""
+    from . import commands as _commands
+    core = model._for("canonical")
+    ph = _alloc("qd_phase")
+    try:
+        core.check(lib.qd_phase_init(core.ctx, core.model, ph))
+        q, p = model._phase_list(ph, Q, "Q", core), model._phase_list(ph, P, "P", core)
+        cd = _alloc("qd_condensed")
+        st = lib.qd_phase_condensed(core.ctx, ph, q, p, cd)
+        if st != 0:
+            raise core.error(st)
+        try:
+            return _commands.output(core, "canonical", lambda buf: lib.qd_condensed_print(
+                core.ctx, cd, True, buf))
+        finally:
+            lib.qd_condensed_free(cd)
+    finally:
+        lib.qd_phase_free(ph)

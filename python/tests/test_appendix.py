@@ -64,3 +64,13 @@ def test_change_errors():
         qdot.change_of_variables("1", "x, y", "x = u + v, y = 2*u + 2*v", "u, v")
     with pytest.raises(ValueError, match="y is not given"):
         qdot.change_of_variables("1", "x, y", "x = u + v", "u, v")
+
+
+def test_condensed_thm1():
+    # Desloge ch. 75 Thm 1 on T41's exchange Q = p, P = -q, and a scaling
+    m = qdot.Model("coordinates q\nparameters m = 1, k = 1\nT = m/2*q'^2\nV = k/2*q^2\n")
+    out = qdot.condensed(m, "p_q", "-q")
+    assert out["verdict"] == "canonical" and out["jacobian_det"] == "1"
+    assert out["mu"] == [["0", "1"], ["-1", "0"]] and out["r_dot"] == ["p_q/m", "-k*q"]
+    out = qdot.condensed(m, ["2*q"], ["p_q"])
+    assert out["verdict"] == "scaled" and out["scale"] == "2"

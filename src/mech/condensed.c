@@ -155,3 +155,17 @@ qd_status qd_condensed_new(qd_ctx *ctx, size_t n, const qd_expr *const *q,
     }
     return st;
 }
+
+qd_status qd_phase_condensed(qd_ctx *ctx, qd_phase *ph, const qd_expr *const *Q,
+                             const qd_expr *const *P, qd_condensed *out) {
+    QD_ARGS_CTX(ctx, ctx && ph && Q && P && out);
+    *out = (qd_condensed){0};
+    const qd_expr *H = NULL;
+    if (qd_phase_ham(ctx, ph, true) == QD_OK)
+        H = ph->h->H;
+    else if (qd_ctx_status(ctx) == QD_ERR_NONLINEAR) /* an implicit H: no eq. 14 */
+        qd_ctx_clear_error(ctx);
+    else
+        return qd_ctx_status(ctx);
+    return qd_condensed_new(ctx, ph->n, ph->q, ph->p, Q, P, H, out);
+}

@@ -550,6 +550,22 @@ static void null_canonical(void **state)
     /* c NULL */
     qd_condensed_free(NULL);
     reset(&F);
+    /* ---- qd_phase_condensed */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(F.ctx, NULL, NULL, (const qd_expr * const *)F.e, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(F.ctx, NULL, (const qd_expr * const *)F.e, NULL, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
     /* ---- qd_condensed_print */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_condensed_print(NULL, NULL, false, &F.buf));
