@@ -2079,6 +2079,20 @@ static void null_form(void **state)
     /* g NULL */
     qd_gram_free(NULL);
     reset(&F);
+    /* ---- qd_fourier_series */
+    /* ctx NULL */
+    assert_null(qd_fourier_series(NULL, F.q, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* f NULL */
+    assert_null(qd_fourier_series(F.ctx, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_fourier_series(F.ctx, F.q, 1, NULL));
+    reset(&F);
+    /* ---- qd_fourier_free */
+    /* f NULL */
+    qd_fourier_free(NULL);
+    reset(&F);
     /* ---- qd_change_vars */
     /* ctx NULL */
     assert_null(qd_change_vars(NULL, F.q, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e));
@@ -5187,6 +5201,22 @@ static void null_render(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_change(F.ctx, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_fourier */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(NULL, NULL, F.q, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(F.ctx, NULL, F.q, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* fx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(F.ctx, NULL, NULL, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(F.ctx, NULL, F.q, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(F.ctx, NULL, F.q, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
     reset(&F);
     /* ---- qd_render_impulse */
     /* ctx NULL */
