@@ -26,7 +26,7 @@ from .forms import (Homogeneity, Periods, QuadraticForm, homogeneity, periods, q
                     tour)
 from .field import Field
 from .appendix import (GramSchmidt, gram_schmidt, ChangeOfVariables, change_of_variables,
-                       condensed)
+                       condensed, fourier)
 from .kernel import Expr, Code, parse, diff, expand, simplify, print_expr
 
 __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "Output", "Fields",
@@ -36,5 +36,5 @@ __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "O
            "homogeneity", "Periods", "periods", "tour", "Field",
            "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr",
            "GramSchmidt", "gram_schmidt", "ChangeOfVariables", "change_of_variables",
-           "condensed"]
+           "condensed", "fourier"]
 from ._lib import VERSION as __version__

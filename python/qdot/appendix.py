@@ -6,7 +6,8 @@ orthogonalization of vectors under a form's matrix, or of a model's
 coordinate tangents under its kinetic metric (Desloge App. 21);
 qdot.change_of_variables(expr, variables, change, new): the Jacobian of
 x = x(y) and the integrand f(x(y)) |J| (App. 19); qdot.condensed(model, Q, P):
-a map in the condensed notation of ch. 75."""
+a map in the condensed notation of ch. 75; qdot.fourier(expr, variables): a
+trigonometric polynomial as a sum of harmonics (App. 31)."""
 
 import json
 
@@ -229,3 +230,33 @@ def condensed(model, Q, P):
             lib.qd_condensed_free(cd)
     finally:
         lib.qd_phase_free(ph)
+
+
+def fourier(expr, variables):
+    """expr (model-language text), a trigonometric polynomial in the named
+    variables, as a sum of harmonics a cos(k.x) + b sin(k.x) (qd_fourier_series,
+    `qdot form EXPR --vars ... --fourier`, Desloge App. 31): the dict of its
+    JSON, "harmonics" a list of {"k", "argument", "cos", "sin"}.  ValueError
+    for a bad variable, qdot.Error for an expr that is no such polynomial."""
+    join = lambda v: v if isinstance(v, str) else ", ".join(v)  # noqa: E731
+    ctx = lib.qd_ctx_new()
+    if not ctx:
+        raise MemoryError("qdot: out of memory")
+    fs = ffi.NULL
+    try:
+        diag = _alloc("qd_diag")
+        f = lib.qd_read(ctx, expr.encode(), ffi.NULL, diag)
+        if not f:
+            raise Error(ffi.string(diag.message).decode() or "cannot read the function")
+        xs, n = _names(ctx, lib.qd_qform_vars_read, join(variables), 64)
+        fs = lib.qd_fourier_series(ctx, f, n, xs)
+        if not fs:
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        buf = _alloc("qd_buf")
+        if lib.qd_render_fourier(ctx, fs, f, xs, lib.QD_RENDER_JSON, buf) != 0:
+            lib.qd_buf_free(buf)
+            raise Error(cstr(lib.qd_ctx_message(ctx)))
+        return json.loads(buf_text(buf))
+    finally:
+        lib.qd_fourier_free(fs)
+        lib.qd_ctx_free(ctx)

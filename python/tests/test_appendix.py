@@ -74,3 +74,12 @@ def test_condensed_thm1():
     assert out["mu"] == [["0", "1"], ["-1", "0"]] and out["r_dot"] == ["p_q/m", "-k*q"]
     out = qdot.condensed(m, ["2*q"], ["p_q"])
     assert out["verdict"] == "scaled" and out["scale"] == "2"
+
+
+def test_fourier_power_reduction():
+    # cos^3 x = (3 cos x + cos 3x)/4
+    d = qdot.fourier("cos(x)^3", ["x"])
+    got = {tuple(h["k"]): (h["cos"], h["sin"]) for h in d["harmonics"]}
+    assert got == {("3",): ("1/4", "0"), ("1",): ("3/4", "0")}
+    with pytest.raises(qdot.Error, match="not a trigonometric polynomial"):
+        qdot.fourier("1/(2 - cos(x))", "x")
