@@ -9,6 +9,8 @@
  * `--generator F1..F4 EXPR` instead gives the transformation a generating
  * function defines and K = H + dF/dt (qd_generate).  The variables are the
  * library's phase space (qd_phase): new ones Q, P or Q1..Qn, P1..Pn.  The
+ * `--condensed`: the map in Desloge's condensed notation (ch. 75;
+ * qd_condensed_new), its Jacobian, M^T mu M and Thm 1.  The
  * library writes the answers (qd_canon_report_print, qd_gen_result_print);
  * this file reads the options, shows errors and maps the verdict to the
  * exit status.
@@ -19,7 +21,7 @@
 
 typedef struct can_args {
     const char *Q, *P, *gen, *format;
-    bool lagrange, newham;
+    bool lagrange, newham, condensed;
     cli_list set;
 } can_args;
 
@@ -34,6 +36,9 @@ static const cli_opt opts[] = {
      "the Lagrange brackets of the old variables and their duality", NULL, NULL},
     {"--K", NULL, CLI_FLAG, offsetof(can_args, newham), NULL,
      "F and the new Hamiltonian K = c H + sum P dQ/dt + dF/dt", NULL, NULL},
+    {"--condensed", NULL, CLI_FLAG, offsetof(can_args, condensed), NULL,
+     "the map in the condensed notation: r, mu, r' = mu grad H, dR/dr, M^T mu M (ch. 75)",
+     NULL, NULL},
     {"--generator", NULL, CLI_CHOICE, offsetof(can_args, gen), "TYPE",
      "the map of the generating function EXPR (the argument after FILE) of this type",
      gen_types, NULL},
@@ -101,6 +106,29 @@ static int examine(can_run *r, const can_args *a) {
                                      : QD_EXIT_NO;
 }
 
+/* --condensed: Thm 1 of ch. 75 on M^T mu M, with Hamilton's equations
+ * r' = mu grad H when the model's H is closed (qd_phase_condensed); the
+ * exit status as examine's. */
+static int condensed(can_run *r, const can_args *a) {
+    qd_ctx *ctx = r->c.ctx;
+    int rc = read_list(r, "--Q", a->Q, &r->Q);
+    if (rc == QD_EXIT_OK)
+        rc = read_list(r, "--P", a->P, &r->P);
+    if (rc != QD_EXIT_OK)
+        return rc;
+    qd_condensed cd;
+    if (qd_phase_condensed(ctx, &r->ph, r->Q, r->P, &cd) != QD_OK)
+        return failure(r);
+    qd_buf b = QD_BUF_INIT;
+    rc = emit(qd_condensed_print(ctx, &cd, r->json, &b), &b);
+    qd_canon_kind k = cd.kind;
+    qd_condensed_free(&cd);
+    return rc != QD_EXIT_OK          ? rc
+           : k == QD_CANON_YES       ? QD_EXIT_OK
+           : k == QD_CANON_UNDECIDED ? QD_EXIT_FAIL
+                                     : QD_EXIT_NO;
+}
+
 static int generate(can_run *r, const can_args *a, const char *text) {
     qd_ctx *ctx = r->c.ctx;
     qd_phase *ph = &r->ph;
@@ -132,8 +160,10 @@ static int combination(cli_run *c) {
     const char *expr = r->pos[1];
     r->json = cli_json(a->format);
     const char *why = a->gen && (a->Q || a->P) ? "give either --Q and --P or --generator"
-                      : a->gen && (a->lagrange || a->newham)
-                          ? "--lagrange and --K go with --Q and --P"
+                      : a->gen && (a->lagrange || a->newham || a->condensed)
+                          ? "--lagrange, --K and --condensed go with --Q and --P"
+                      : a->condensed && (a->lagrange || a->newham)
+                          ? "--condensed is not taken with --lagrange or --K"
                       : a->gen && !expr ? "--generator needs its expression EXPR after FILE"
                       : !a->gen && expr ? "an expression after FILE goes with --generator"
                       : !a->gen && !a->Q ? "--Q is missing"
@@ -150,7 +180,9 @@ static int run(cli_run *c) {
     if (rc == QD_EXIT_OK && qd_phase_init(c->ctx, c->mf.model, &r->ph) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK)
-        rc = r->a.gen ? generate(r, &r->a, r->pos[1]) : examine(r, &r->a);
+        rc = r->a.gen         ? generate(r, &r->a, r->pos[1])
+             : r->a.condensed ? condensed(r, &r->a)
+                              : examine(r, &r->a);
     return rc;
 }
 

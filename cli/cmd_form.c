@@ -18,7 +18,7 @@
 typedef struct form_args {
     cli_run c; /* the options follow */
     const char *format, *vars, *text, *periods, *gram, *change, *newv, *positive;
-    bool homog;
+    bool homog, fourier;
 } form_args;
 
 static const cli_opt form_opts[] = {
@@ -30,6 +30,9 @@ static const cli_opt form_opts[] = {
      "test these shifts as periods of EXPR, and their fundamental system (App. 31)", NULL, NULL},
     {"--gram-schmidt", NULL, CLI_TEXT, offsetof(form_args, gram), "\"A1; A2 ...\"",
      "orthogonalize these vectors under the form's matrix: b(i)^T a b(j) = 0 (App. 21)", NULL,
+     NULL},
+    {"--fourier", NULL, CLI_FLAG, offsetof(form_args, fourier), NULL,
+     "EXPR, a trigonometric polynomial in the variables, as a sum of harmonics (App. 31)", NULL,
      NULL},
     {"--change", NULL, CLI_TEXT, offsetof(form_args, change), "\"x = X(y), ...\"",
      "change the variables of the integral of EXPR: each old variable in terms of --new, its "
@@ -44,7 +47,7 @@ static const cli_opt form_opts[] = {
 
 static const cli_spec form_spec = {
     "form", "EXPR --vars \"x, y, ...\" [--homogeneity | --periods \"W; ...\" | "
-    "--gram-schmidt \"A; ...\" | --change \"x = X(y), ...\" --new \"y, ...\"] "
+    "--gram-schmidt \"A; ...\" | --fourier | --change \"x = X(y), ...\" --new \"y, ...\"] "
     "[--positive \"r, ...\"] [--format F]",
     "a quadratic form: its matrix, Lagrange's reduction to a sum of squares, its inertia; "
     "or (--homogeneity) any function's degree of homogeneity, or (--periods) its periods, "
@@ -57,6 +60,8 @@ static int check(cli_run *c) {
     const form_args *a = (form_args *)c;
     if (a->gram && (a->periods || a->homog))
         return cli_usage_error("--gram-schmidt is not taken with --periods or --homogeneity");
+    if (a->fourier && (a->gram || a->periods || a->homog || a->change))
+        return cli_usage_error("--fourier is not taken with another question");
     if (a->change && (a->gram || a->periods || a->homog))
         return cli_usage_error("--change is not taken with --gram-schmidt, --periods or "
                                "--homogeneity");
@@ -114,6 +119,20 @@ static int change(qd_ctx *ctx, const form_args *a, const qd_expr *f, const qd_ex
     return cli_emit(&b, "change of variables");
 }
 
+/* --fourier: EXPR as a sum of harmonics in the variables. */
+static int fourier(qd_ctx *ctx, const form_args *a, const qd_expr *f, const qd_expr *const *x,
+                   size_t n) {
+    qd_fourier *s = qd_fourier_series(ctx, f, n, x);
+    qd_buf b = QD_BUF_INIT;
+    bool ok = s && qd_render_fourier(ctx, s, f, x, cli_render_format(a->format), &b) == QD_OK;
+    qd_fourier_free(s);
+    if (!ok) {
+        qd_buf_free(&b);
+        return cli_diag_ctx(ctx);
+    }
+    return cli_emit(&b, "Fourier series");
+}
+
 /* The reduction, or (--homogeneity) the degree: a "no" exits 3, undecided 1. */
 static int answer(qd_ctx *ctx, const form_args *a, const qd_expr *phi, const qd_expr *const *x,
                   size_t n, size_t g, const qd_expr *const *w) {
@@ -160,6 +179,8 @@ static int run(cli_run *c) {
     }
     if (a->change)
         return change(c->ctx, a, phi, x, n);
+    if (a->fourier)
+        return fourier(c->ctx, a, phi, x, n);
     const char *vecs = a->gram ? a->gram : a->periods;
     if (vecs && qd_periods_vectors_read(c->ctx, vecs, n, &g, &w) != QD_OK) {
         cli_diag_show(a->gram ? "--gram-schmidt" : "--periods", vecs, qd_ctx_diag(c->ctx));

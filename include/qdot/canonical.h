@@ -293,6 +293,60 @@ QD_API qd_status qd_gen_result_print(qd_ctx *ctx, const qd_phase *ph, qd_gen_typ
                                      const qd_expr *F, const qd_gen_result *g, bool json,
                                      qd_buf *out);
 
+/* ---- Desloge's condensed notation (ch. 75) --------------------------------
+ * r = (q_1..q_f, p_1..p_f) (eq. 1); lambda_ij = 1 when j = i + f, else 0,
+ * and mu = lambda - lambda^T ([[0, I], [-I, 0]], eqs. 2-3), with mu^T = -mu,
+ * mu mu^T = 1 and |mu| = 1 (eqs. 5-10).  Hamilton's equations are
+ * r'_i = mu_ij dH/dr_j (eq. 14).  A map R = R(r) = (Q, P) has the Lagrange
+ * brackets [r_k, r_l] = mu_ij dR_i/dr_k dR_j/dr_l, the matrix M^T mu M of
+ * its Jacobian M = dR/dr (eq. 16), and is canonical iff [r_k, r_l] = mu_kl
+ * (Thm 1, eq. 17); then |dR/dr| = +-1 (Ex. 2, eq. 28; +1 by ch. 77 Thm 5).
+ * A map with [r_k, r_l] = c mu_kl, c != 1 constant, keeps Hamilton's form
+ * with valence c (ch. 84 Thm 3) but is not canonical (QD_CANON_SCALED). */
+typedef struct qd_condensed {
+    size_t n;                    /* f: r and R have 2f entries, the matrices 2f x 2f */
+    const qd_expr **r, **R;      /* (q, p) and (Q(q, p), P(q, p)) */
+    const qd_expr **lambda, **mu;
+    bool has_H;                  /* H was given: grad and rdot are set */
+    const qd_expr **grad, **rdot; /* dH/dr_j and mu_ij dH/dr_j (eq. 14) */
+    const qd_expr **M;           /* dR_i/dr_j, row-major */
+    const qd_expr **bracket;     /* [r_k, r_l] = (M^T mu M)_kl */
+    const qd_expr *det;          /* |dR/dr| */
+    qd_canon_kind kind;          /* eq. 17: YES, SCALED (c mu), NO, UNDECIDED */
+    const qd_expr *scale;        /* YES: 1, SCALED: c; else NULL */
+    size_t bad_k, bad_l;         /* NO, UNDECIDED: the first entry that is not c mu_kl */
+    const qd_expr *should_be;    /* its value under eq. 17 */
+    qd_zero_result check;        /* the zero test behind kind (a witness for NO) */
+} qd_condensed;
+
+/* The condensed notation of the phase space (q, p) (n each), Hamilton's
+ * equations of H (NULL: none) and the map (Q, P) (n each, in q, p) into
+ * *out.  QD_OK with the verdict of Thm 1 in out->kind (also for a "no"), or
+ * an error (reason in ctx).  Release with qd_condensed_free. */
+QD_API qd_status qd_condensed_new(qd_ctx *ctx, size_t n, const qd_expr *const *q,
+                                  const qd_expr *const *p, const qd_expr *const *Q,
+                                  const qd_expr *const *P, const qd_expr *H,
+                                  qd_condensed *out);
+QD_API void qd_condensed_free(qd_condensed *c);
+/* The same on a model's phase space ph, with its H when H is closed
+ * (qd_phase_ham; an implicit H, QD_ERR_NONLINEAR, leaves eq. 14 out): what
+ * `qdot canonical --condensed` and Python's qdot.condensed compute.  The
+ * errors of qd_phase_ham (about a statement of the model) and of
+ * qd_condensed_new. */
+QD_API qd_status qd_phase_condensed(qd_ctx *ctx, qd_phase *ph, const qd_expr *const *Q,
+                                    const qd_expr *const *P, qd_condensed *out);
+
+/* c written out, appended to out (what `qdot canonical --condensed` prints):
+ * text r and R, lambda and mu, Hamilton's equations r' = mu grad H (when
+ * H was given), M = dR/dr, the brackets M^T mu M, Thm 1's verdict (with the
+ * failing entry and its witness for a no) and |dR/dr|; JSON "r", "R",
+ * "lambda", "mu", "grad_H", "r_dot" (null without H), "jacobian",
+ * "lagrange" (M^T mu M), "jacobian_det", "verdict" (qd_canon_kind_name),
+ * "scale", "entry" ([k, l], 1-based, or null), "value", "should_be" and
+ * the zero test's keys (qd_zero_result_json).  QD_ERR_NOMEM when out could
+ * not grow, QD_ERR_NUMERIC for a witness that is not finite. */
+QD_API qd_status qd_condensed_print(qd_ctx *ctx, const qd_condensed *c, bool json, qd_buf *out);
+
 #ifdef __cplusplus
 }
 #endif
@@ -302,5 +356,5 @@ QD_API qd_status qd_gen_result_print(qd_ctx *ctx, const qd_phase *ph, qd_gen_typ
  * given), NULL, 0, false or NaN, as its return type has it; a void function
  * returns, and every _free accepts NULL. NULL is an accepted value, as
  * documented at the function, for: qd_canonical_check (t); qd_generate (H);
- * qd_generate_f2 (H); qd_transformed_hamiltonian (t); qd_phase_bracket_print (G). An array whose count is 0 may be NULL. */
+ * qd_generate_f2 (H); qd_transformed_hamiltonian (t); qd_phase_bracket_print (G); qd_condensed_new (H). An array whose count is 0 may be NULL. */
 #endif

@@ -200,6 +200,40 @@ QD_API qd_gram *qd_gram_schmidt(qd_ctx *ctx, size_t n, const qd_expr *const *T, 
                                 const qd_expr *const *a);
 QD_API void qd_gram_free(qd_gram *g);
 
+/* ---- the Fourier series of a trigonometric polynomial (App. 31, ch. 79) ---
+ * A multiply periodic function of angles x (App. 31; the angle variables of
+ * ch. 79) written as a sum of harmonics,
+ *
+ *     f = sum_k a_k cos(k.x) + b_k sin(k.x),
+ *
+ * exactly, when f is a polynomial in cos and sin of linear combinations of
+ * the x with coefficients free of them: products and powers are linearized
+ * (cos a cos b = [cos(a - b) + cos(a + b)]/2, ...) and phases moved into the
+ * coefficients; k and -k are one harmonic, the constant term has k = 0 and
+ * b = 0.  The sum is checked against f by the zero test.  Any other f (a
+ * ratio of trigonometric functions, a power series) is refused: its series
+ * is infinite, and no numeric series is computed. */
+typedef struct qd_fourier_term {
+    const qd_expr *arg;       /* k.x */
+    const qd_expr **k;        /* n: the wave vector, d(arg)/dx_i */
+    const qd_expr *a, *b;     /* a cos(arg) + b sin(arg) */
+} qd_fourier_term;
+
+typedef struct qd_fourier {
+    size_t n, nterms;
+    qd_fourier_term *terms;   /* nterms, in the order they were made */
+    const qd_expr **k;        /* the terms' wave vectors' storage */
+    qd_zero_kind check;       /* the sum against f: QD_ZERO_PROVEN or QD_ZERO_NUMERIC */
+} qd_fourier;
+
+/* The series of f in the n variables x.  NULL on failure, reason in ctx:
+ * QD_ERR_ARG for a variable that is not a symbol or an f that is not a
+ * trigonometric polynomial in them (a power above 64 included), QD_ERR_TOOBIG
+ * for more than 4096 harmonics.  Free with qd_fourier_free. */
+QD_API qd_fourier *qd_fourier_series(qd_ctx *ctx, const qd_expr *f, size_t n,
+                                     const qd_expr *const *x);
+QD_API void qd_fourier_free(qd_fourier *f);
+
 /* ---- change of variables in an integral (Desloge App. 19) -----------------
  * The n old variables x given in terms of n new ones y, x = x(y), have the
  * Jacobian matrix dx_i/dy_j and determinant J(x/y), with J(y/x) = 1/J(x/y)

@@ -220,6 +220,14 @@ QD_API qd_status qd_render_gram(qd_ctx *ctx, const qd_gram *g, const qd_expr *co
 QD_API qd_status qd_render_change(qd_ctx *ctx, const qd_change *c, qd_render_format fmt,
                                   qd_buf *out);
 
+/* The Fourier series f of fx in the variables x (qd_fourier_series,
+ * qdot/form.h; Desloge App. 31): in text each harmonic's wave vector k and
+ * its cos and sin coefficients (the constant term alone for k = 0), and the
+ * check; in JSON "variables", "f", "harmonics" ({"k", "argument", "cos",
+ * "sin"} each) and "certainty".  QD_ERR_ARG for another format. */
+QD_API qd_status qd_render_fourier(qd_ctx *ctx, const qd_fourier *f, const qd_expr *fx,
+                                   const qd_expr *const *x, qd_render_format fmt, qd_buf *out);
+
 /* ---- impulsive motion (qdot/impulse.h) ----------------------------------- */
 
 /* Append r, the answer of qd_impulse_solve on m, to out: text (the

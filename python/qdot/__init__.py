@@ -25,7 +25,8 @@ from .relativity import lorentz, proper_time, collide
 from .forms import (Homogeneity, Periods, QuadraticForm, homogeneity, periods, quadratic_form,
                     tour)
 from .field import Field
-from .appendix import GramSchmidt, gram_schmidt
+from .appendix import (GramSchmidt, gram_schmidt, ChangeOfVariables, change_of_variables,
+                       condensed, fourier)
 from .kernel import Expr, Code, parse, diff, expand, simplify, print_expr
 from ._progress import set_progress
 
@@ -35,5 +36,6 @@ __all__ = ["Model", "ModelError", "NumericalError", "Error", "ArgumentError", "O
            "lorentz", "proper_time", "collide", "QuadraticForm", "quadratic_form", "Homogeneity",
            "homogeneity", "Periods", "periods", "tour", "Field",
            "Expr", "Code", "parse", "diff", "expand", "simplify", "print_expr", "set_progress",
-           "GramSchmidt", "gram_schmidt"]
+           "GramSchmidt", "gram_schmidt", "ChangeOfVariables", "change_of_variables",
+           "condensed", "fourier"]
 from ._lib import VERSION as __version__

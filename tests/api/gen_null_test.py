@@ -77,6 +77,7 @@ NULLABLE = {
     'qd_gram_schmidt': {'T'},  # the identity (App. 21 Thm 1)
     'qd_render_gram': {'x', 'T'},  # no names; the identity
     'qd_change_vars': {'f'},  # the Jacobian alone
+    'qd_condensed_new': {'H'},  # no Hamilton's equations
     'qd_field_modes_compute': {'opts'},
     'qd_field_parse': {'diag', 'opts'},
     'qd_free_symbols': {'out'},

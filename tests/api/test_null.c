@@ -528,6 +528,55 @@ static void null_canonical(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_gen_result_print(F.ctx, NULL, (qd_gen_type){0}, F.q, NULL, false, NULL));
     reset(&F);
+    /* ---- qd_condensed_new */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(NULL, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* p NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, (const qd_expr * const *)F.e, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL, F.q, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_new(F.ctx, 1, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, F.q, NULL));
+    reset(&F);
+    /* ---- qd_condensed_free */
+    /* c NULL */
+    qd_condensed_free(NULL);
+    reset(&F);
+    /* ---- qd_phase_condensed */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* ph NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* Q NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(F.ctx, NULL, NULL, (const qd_expr * const *)F.e, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* P NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(F.ctx, NULL, (const qd_expr * const *)F.e, NULL, (qd_condensed *)(void *)F.blob));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_phase_condensed(F.ctx, NULL, (const qd_expr * const *)F.e, (const qd_expr * const *)F.e, NULL));
+    reset(&F);
+    /* ---- qd_condensed_print */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_print(NULL, NULL, false, &F.buf));
+    reset(&F);
+    /* c NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_print(F.ctx, NULL, false, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_condensed_print(F.ctx, NULL, false, NULL));
+    reset(&F);
     teardown(&F);
 }
 
@@ -2063,6 +2112,20 @@ static void null_form(void **state)
     /* ---- qd_gram_free */
     /* g NULL */
     qd_gram_free(NULL);
+    reset(&F);
+    /* ---- qd_fourier_series */
+    /* ctx NULL */
+    assert_null(qd_fourier_series(NULL, F.q, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* f NULL */
+    assert_null(qd_fourier_series(F.ctx, NULL, 1, (const qd_expr * const *)F.e));
+    reset(&F);
+    /* x NULL */
+    assert_null(qd_fourier_series(F.ctx, F.q, 1, NULL));
+    reset(&F);
+    /* ---- qd_fourier_free */
+    /* f NULL */
+    qd_fourier_free(NULL);
     reset(&F);
     /* ---- qd_change_vars */
     /* ctx NULL */
@@ -5165,6 +5228,22 @@ static void null_render(void **state)
     reset(&F);
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_render_change(F.ctx, NULL, (qd_render_format){0}, NULL));
+    reset(&F);
+    /* ---- qd_render_fourier */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(NULL, NULL, F.q, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* f NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(F.ctx, NULL, F.q, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* fx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(F.ctx, NULL, NULL, (const qd_expr * const *)F.e, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* x NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(F.ctx, NULL, F.q, NULL, (qd_render_format){0}, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_render_fourier(F.ctx, NULL, F.q, (const qd_expr * const *)F.e, (qd_render_format){0}, NULL));
     reset(&F);
     /* ---- qd_render_impulse */
     /* ctx NULL */

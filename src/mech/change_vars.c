@@ -1,5 +1,5 @@
 /*
- * src/mech/change.c - a change of variables in an integral (Desloge
+ * src/mech/change_vars.c - a change of variables in an integral (Desloge
  * App. 19; qd_change_vars, qdot/form.h): the Jacobian matrix dx_i/dy_j of
  * x = x(y), its determinant J(x/y), J(y/x) = 1/J(x/y) (App. 18), the sign
  * of J where its form shows it, its zero set (where the region must be
