@@ -9,7 +9,10 @@
  * symbol gets a value k/16 with 3 <= k <= 29 (a positive symbol positive,
  * the others of either sign), chosen by a fixed pseudo-random sequence.  A
  * point where the expression is undefined (log or sqrt of a negative, a
- * division by a ball containing 0, asin outside [-1, 1]) is skipped.  The
+ * division by a ball containing 0, asin outside [-1, 1]) is skipped, and so
+ * is one outside the domain of e as given, where only its simplified form
+ * is defined (sqrt(a) sqrt(b) simplified to sqrt(a b), at a, b < 0): a
+ * witness's value is that of e.  The
  * result is tri-state:
  *   QD_ZERO_PROVEN   the simplifier reduced it to 0;
  *   QD_ZERO_NONZERO  a witness: at the point, the value's ball (midpoint

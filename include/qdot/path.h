@@ -98,6 +98,8 @@ typedef struct qd_path {
 typedef struct qd_path_set {
     size_t count;
     qd_path *paths;           /* distinct paths, by increasing action */
+    bool searched;            /* found by the opts->all multistart: more may exist beyond
+                               * what its starts aimed at (qd_path_print's note) */
 } qd_path_set;
 
 /* The stationary paths of the action between (t0, q0) and (t1, q1) for the
@@ -232,7 +234,10 @@ QD_API qd_status qd_path_print(qd_ctx *ctx, const qd_path_set *ps, const qd_mode
  * sample: "count", "paths" (each "action", at fixed energy "least_action"
  * and "time", "initial_velocities", "multipliers", "residual", "samples"
  * as [t, q...] rows, "kinetic_foci", "kinetic_foci_multiplicity",
- * "minimum", "examined").  QD_ERR_NUMERIC for a non-finite number. */
+ * "minimum", "examined"), and for a searched set "search": the text's note
+ * as data, {"code": "more_paths_may_exist", "covered": what the starts
+ * aimed at, "ask": the options that ask for more}.  QD_ERR_NUMERIC for a
+ * non-finite number. */
 QD_API qd_status qd_path_json(qd_ctx *ctx, const qd_path_set *ps, const qd_model *m,
                               const qd_eom *e, qd_buf *out);
 

@@ -52,16 +52,42 @@ static void write_second_variation(const pt_out *r, const qd_path *p, qd_buf *b)
 }
 
 /* --all: what the multistart covers, and how to ask for more (issue 33: a
- * search that stops short of a longer path must say so). */
-static void write_search_note(const pt_out *r, qd_buf *b) {
+ * search that stops short of a longer path must say so), in the text and
+ * in JSON with the same words. */
+static const char *search_covered(const pt_out *r) {
     bool energy = r->ps->count && !isnan(r->ps->paths[0].abbreviated);
+    return energy ? "the first three near passes of each start's motion, within 12 chord times"
+                  : "velocities spread about the chord's, to 2.5 times its speed or the "
+                    "motion's own rate";
+}
+
+static const char *search_guess(const pt_out *r) {
+    bool energy = r->ps->count && !isnan(r->ps->paths[0].abbreviated);
+    return energy ? "--guess \"q'=...\" (aimed at its motion's nearest pass)"
+                  : "--guess \"q'=...\"";
+}
+
+static void write_search_note(const pt_out *r, qd_buf *b) {
     qd_buf_printf(b, "note: more stationary paths may exist beyond those the starts aimed at "
-                     "(%s); to ask for more: --guess \"q'=...\"%s, --segments N\n",
-                  energy ? "the first three near passes of each start's motion, within 12 "
-                           "chord times"
-                         : "velocities spread about the chord's, to 2.5 times its speed or the "
-                           "motion's own rate",
-                  energy ? " (aimed at its motion's nearest pass)" : "");
+                     "(%s); to ask for more: %s, --segments N\n",
+                  search_covered(r), search_guess(r));
+}
+
+static void write_search_json(const pt_out *r, qd_json *j) {
+    qd_json_key(j, "search");
+    qd_json_begin_object(j);
+    qd_json_key(j, "code");
+    qd_json_string(j, "more_paths_may_exist");
+    qd_json_key(j, "note");
+    qd_json_string(j, "more stationary paths may exist beyond those the starts aimed at");
+    qd_json_key(j, "covered");
+    qd_json_string(j, search_covered(r));
+    qd_json_key(j, "ask");
+    qd_json_begin_array(j);
+    qd_json_string(j, search_guess(r));
+    qd_json_string(j, "--segments N");
+    qd_json_end_array(j);
+    qd_json_end_object(j);
 }
 
 static void write_text(const pt_out *r, qd_buf *b) {
@@ -113,6 +139,8 @@ static bool write_json(const pt_out *r, qd_buf *b) {
     qd_json_begin_object(&j);
     qd_json_key(&j, "count");
     qd_json_number(&j, (double)r->ps->count);
+    if (r->ps->searched)
+        write_search_json(r, &j);
     qd_json_key(&j, "paths");
     qd_json_begin_array(&j);
     for (size_t i = 0; i < r->ps->count; i++) {

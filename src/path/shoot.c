@@ -1560,6 +1560,7 @@ static qd_status path_search(qd_ctx *ctx, const qd_model *m, const qd_eom *e, bo
         path_clear(&fd.paths[--fd.count]);
     out->count = fd.count;
     out->paths = fd.paths;
+    out->searched = o->all;
     fd.paths = NULL;
     fd.count = 0;
 done:

@@ -219,6 +219,29 @@ bool qd__ball_eval(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const
     return k != PT_BAD && k != PT_UNKNOWN && isfinite(*mid) && isfinite(*rad);
 }
 
+/* A point where the simplified form gave k (ZERO or NONZERO at prec bits):
+ * the expression as given must be defined there too, or the point is
+ * skipped (PT_BAD): simplifying may widen the domain (sqrt(a) sqrt(b) *
+ * (|a| - a) vanishes wherever it is defined, a, b >= 0, but its merged
+ * form sqrt(a b) (|a| - a) is 2.4 at a = b = -1).  A witness is the given
+ * expression's own value, its ball excluding 0. */
+static pt_kind in_domain(qd_ctx *ctx, const qd_expr *e, size_t n, const qd_expr *const *syms,
+                         const double *at, pt_kind k, slong prec, double *mid, double *rad) {
+    double m = 0, r = 0;
+    pt_kind g = PT_WIDE;
+    for (; prec <= 512 && g == PT_WIDE; prec *= 2)
+        g = eval_at(ctx, e, n, syms, at, prec, &m, &r);
+    if (g == PT_BAD || g == PT_UNKNOWN)
+        return PT_BAD;
+    if (k == PT_ZERO)
+        return PT_ZERO;
+    if (g != PT_NONZERO)
+        return PT_BAD; /* the two forms disagree here: not a witness */
+    *mid = m;
+    *rad = r;
+    return PT_NONZERO;
+}
+
 static uint64_t next_rand(uint64_t *s) {
     *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
     return *s >> 33;
@@ -253,8 +276,15 @@ qd_status qd_zero_test(qd_ctx *ctx, const qd_expr *e, qd_zero_result *out) {
         }
         return QD_OK;
     }
+    /* the points bind the symbols of e as given, so that each is checked to
+     * lie in e's domain (below); s has no others */
     const qd_expr *syms[QD_WITNESS_MAX];
-    size_t n = qd_free_symbols(ctx, s, syms, QD_WITNESS_MAX);
+    size_t n = qd_free_symbols(ctx, e, syms, QD_WITNESS_MAX);
+    const qd_expr *given = e;
+    if (n > QD_WITNESS_MAX && qd_ctx_status(ctx) == QD_OK) {
+        given = NULL; /* too many to bind: s's alone, e's domain not checked */
+        n = qd_free_symbols(ctx, s, syms, QD_WITNESS_MAX);
+    }
     if (n > QD_WITNESS_MAX || (n == 0 && qd_ctx_status(ctx) != QD_OK))
         return n > QD_WITNESS_MAX ? QD_OK : qd_ctx_status(ctx);
     uint64_t seed = 0x9e3779b97f4a7c15ULL;
@@ -274,6 +304,8 @@ qd_status qd_zero_test(qd_ctx *ctx, const qd_expr *e, qd_zero_result *out) {
             k = eval_at(ctx, s, n, syms, at, prec, &m, &r);
         if (k == PT_UNKNOWN)
             return QD_OK;
+        if ((k == PT_NONZERO || k == PT_ZERO) && given && given != s)
+            k = in_domain(ctx, given, n, syms, at, k, prec / 2, &m, &r);
         if (k == PT_NONZERO) {
             out->kind = QD_ZERO_NONZERO;
             out->bits = (unsigned)(prec / 2);

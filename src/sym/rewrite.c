@@ -8,7 +8,12 @@
  *   sqrt(a) sqrt(b) = sqrt(a b), and 1/(sqrt(a) sqrt(b)) = 1/sqrt(a b):
  *       where both roots are real, a, b >= 0 (a real root of a negative
  *       is undefined), the product under one root is expanded, so
- *       sqrt(2Q) sqrt(1 - K^2 q^2/(2Q)) = sqrt(2Q - K^2 q^2).
+ *       sqrt(2Q) sqrt(1 - K^2 q^2/(2Q)) = sqrt(2Q - K^2 q^2).  The merged
+ *       root is defined on more (a, b < 0): the result equals the input
+ *       on the input's domain only, so qd_zero_test checks each point in
+ *       the domain of the expression as given (src/sym/certify.c).
+ *       Merging only under known signs would lose the oscillator's F1,
+ *       whose Q is not known positive in `canonical --generator`.
  * The rewritten expression goes through the whole pipeline beside the
  * original; the shorter result wins, so no rule makes anything longer.
  */

@@ -26,7 +26,8 @@
   S = (pi/2)^2/2; --all also finds the way round the other side, 3 pi/2,
   S = (3 pi/2)^2/2, with its kinetic focus at the antipode, t = 2/3; at
   the energy 1/2 (speed 1) the arcs pi/2, 3 pi/2 and 5 pi/2, time = arc =
-  A, without hints, a note that more may exist, and --guess "y'=-1" the
+  A, without hints, a note that more may exist (in JSON "search", code
+  more_paths_may_exist, with the text's words), and --guess "y'=-1" the
   way round.
 - impulse: a particle bouncing on the floor beside a second particle is no
   collision of the two (the floor's impulse is external: the total momentum
@@ -333,6 +334,14 @@ def paths(qdot, tmp):
                        '--energy', '1/2', '--all')
     check('sphere at E: the note', rc == 0 and 'more stationary paths may exist' in out and
           '--segments N' in out, out[:400] + err)
+    # the JSON carries the same note as data: a key, a machine code, the text's words
+    jrc, jout, jerr = run(qdot, 'path', f, '--from', 'x=1, y=0, z=0', '--to', 'x=0, y=1, z=0',
+                          '--energy', '1/2', '--all', '--format', 'json')
+    sr = json.loads(jout).get('search', {}) if jrc == 0 else {}
+    check('sphere at E: the note in JSON', sr.get('code') == 'more_paths_may_exist' and
+          sr.get('note', '?') in out and '(%s)' % sr.get('covered', '?') in out and
+          sr.get('ask', [])[-1:] == ['--segments N'] and
+          all(a in out for a in sr.get('ask', ['?'])), jout[:400] + jerr)
     times = [float(t) for t in re.findall(r'^  time: (\S+)$', out, re.M)]
     least = [float(a) for a in re.findall(r'^  least action \(Maupertuis, integral of p.dq\): (\S+)$',
                                           out, re.M)]
@@ -347,6 +356,7 @@ def paths(qdot, tmp):
     rc, out, err = run(qdot, 'path', f, '--from', 'x=1, y=0, z=0', '--to', 'x=0, y=1, z=0',
                        '--energy', '1/2', '--guess', "y'=-1", '--format', 'json')
     d = json.loads(out) if rc == 0 else {'paths': []}
+    check('sphere at E: no search note without --all', rc == 0 and 'search' not in d, out[:200])
     check('sphere at E: --guess the way round', len(d['paths']) == 1 and
           close(d['paths'][0]['time'], 1.5 * math.pi, 1e-8), out[:300] + err)
 

@@ -3,7 +3,11 @@
  * expression the simplifier reduces to 0 is PROVEN; one that is not zero
  * gets a witness point whose ball excludes 0, and the witness is checked
  * here by evaluating the expression at it in double; one that is zero but
- * not reduced is NUMERIC; one with an undefined function is UNKNOWN.
+ * not reduced is NUMERIC; one with an undefined function is UNKNOWN; a
+ * witness lies in the domain of the expression as given, not only of its
+ * simplified form (sqrt(a) sqrt(b) (|a| - a) is 0 wherever it is defined,
+ * a, b >= 0, but simplifies to sqrt(a b) (|a| - a), which is defined and
+ * nonzero at a, b < 0: it was called nonzero with a witness there).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -83,12 +87,34 @@ static void undecided(void **state) {
     qd_ctx_free(ctx);
 }
 
+static void witness_in_domain(void **state) {
+    (void)state;
+    qd_ctx *ctx = qd_ctx_new();
+    qd_zero_result z = test(ctx, "sqrt(a)*sqrt(b)*(abs(a) - a)");
+    assert_int_equal(QD_ZERO_NUMERIC, z.kind);
+    /* nonzero on its domain: the witness is a point of it, where the
+     * expression as given has the witness's value */
+    const char *cases[] = {"sqrt(a)*sqrt(b)*(abs(a) - a) + sqrt(a)", "sqrt(a)*sqrt(b) - 1"};
+    for (size_t c = 0; c < 2; c++) {
+        const qd_expr *e = qd_read(ctx, cases[c], NULL, NULL);
+        assert_int_equal(QD_OK, qd_zero_test(ctx, e, &z));
+        assert_int_equal(QD_ZERO_NONZERO, z.kind);
+        for (size_t i = 0; i < z.witness.n; i++)
+            assert_true(z.witness.at[i] >= 0);
+        double v = 0;
+        assert_int_equal(QD_OK, qd_eval(ctx, e, z.witness.n, z.witness.sym, z.witness.at, &v));
+        assert_true(fabs(v - z.witness.value) <= 1e-12 * (1 + fabs(v)));
+    }
+    qd_ctx_free(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(proven),
         cmocka_unit_test(witness),
         cmocka_unit_test(numeric),
         cmocka_unit_test(undecided),
+        cmocka_unit_test(witness_in_domain),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
