@@ -58,7 +58,7 @@ static int start(cli_lin_run *r, const cli_conlin_args *a, const char *opt) {
     qd_buf b = QD_BUF_INIT;
     if (rc == QD_EXIT_OK && ch.pt && a->fmt == QD_SS_TEXT &&
         qd_equilibrium_choice_note(r->e, &ch, &b) == QD_OK)
-        fprintf(stderr, "qdot: note: about %s (choose with --about)\n", qd_buf_str(&b));
+        fprintf(stderr, "qdot: note: about %s (choose with %s)\n", qd_buf_str(&b), opt);
     qd_buf_free(&b);
     qd_equilibrium_choice_free(&ch);
     return rc;
