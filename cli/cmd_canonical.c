@@ -86,43 +86,29 @@ static int failure(const can_run *r) {
     return cli_diag_model(r->c.ctx, r->c.mf.path, r->c.mf.text, r->c.mf.model);
 }
 
-/* The verdict and the extras asked; the exit status carries the answer: 0
+/* The verdict and the extras asked, or (--condensed) Thm 1 of ch. 75 on
+ * M^T mu M with Hamilton's equations r' = mu grad H when the model's H is
+ * closed (qd_phase_condensed); the exit status carries the answer: 0
  * canonical, 3 a certified no (scaled or a failing bracket), 1 undecided. */
 static int examine(can_run *r, const can_args *a) {
-    int rc = read_list(r, "--Q", a->Q, &r->Q);
-    if (rc == QD_EXIT_OK)
-        rc = read_list(r, "--P", a->P, &r->P);
-    if (rc != QD_EXIT_OK)
-        return rc;
-    if (qd_canonical_examine(r->c.ctx, &r->ph, r->Q, r->P, a->lagrange, a->newham, &r->rep) !=
-        QD_OK)
-        return failure(r);
-    qd_buf b = QD_BUF_INIT;
-    rc = emit(qd_canon_report_print(r->c.ctx, &r->ph, &r->rep, r->json, &b), &b);
-    qd_canon_kind k = r->rep.v.kind;
-    return rc != QD_EXIT_OK          ? rc
-           : k == QD_CANON_YES       ? QD_EXIT_OK
-           : k == QD_CANON_UNDECIDED ? QD_EXIT_FAIL
-                                     : QD_EXIT_NO;
-}
-
-/* --condensed: Thm 1 of ch. 75 on M^T mu M, with Hamilton's equations
- * r' = mu grad H when the model's H is closed (qd_phase_condensed); the
- * exit status as examine's. */
-static int condensed(can_run *r, const can_args *a) {
     qd_ctx *ctx = r->c.ctx;
     int rc = read_list(r, "--Q", a->Q, &r->Q);
     if (rc == QD_EXIT_OK)
         rc = read_list(r, "--P", a->P, &r->P);
     if (rc != QD_EXIT_OK)
         return rc;
-    qd_condensed cd;
-    if (qd_phase_condensed(ctx, &r->ph, r->Q, r->P, &cd) != QD_OK)
+    qd_condensed cd = {0};
+    if (a->condensed ? qd_phase_condensed(ctx, &r->ph, r->Q, r->P, &cd) != QD_OK
+                     : qd_canonical_examine(ctx, &r->ph, r->Q, r->P, a->lagrange, a->newham,
+                                            &r->rep) != QD_OK)
         return failure(r);
     qd_buf b = QD_BUF_INIT;
-    rc = emit(qd_condensed_print(ctx, &cd, r->json, &b), &b);
-    qd_canon_kind k = cd.kind;
-    qd_condensed_free(&cd);
+    rc = emit(a->condensed ? qd_condensed_print(ctx, &cd, r->json, &b)
+                           : qd_canon_report_print(ctx, &r->ph, &r->rep, r->json, &b),
+              &b);
+    qd_canon_kind k = a->condensed ? cd.kind : r->rep.v.kind;
+    if (a->condensed)
+        qd_condensed_free(&cd);
     return rc != QD_EXIT_OK          ? rc
            : k == QD_CANON_YES       ? QD_EXIT_OK
            : k == QD_CANON_UNDECIDED ? QD_EXIT_FAIL
@@ -180,9 +166,7 @@ static int run(cli_run *c) {
     if (rc == QD_EXIT_OK && qd_phase_init(c->ctx, c->mf.model, &r->ph) != QD_OK)
         rc = cli_diag_ctx(c->ctx);
     if (rc == QD_EXIT_OK)
-        rc = r->a.gen         ? generate(r, &r->a, r->pos[1])
-             : r->a.condensed ? condensed(r, &r->a)
-                              : examine(r, &r->a);
+        rc = r->a.gen ? generate(r, &r->a, r->pos[1]) : examine(r, &r->a);
     return rc;
 }
 

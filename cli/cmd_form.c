@@ -11,6 +11,7 @@
  * names symbols assumed positive, made before anything else is read.
  */
 #include "driver.h"
+#include "state.h"
 
 #include "qdot/form.h"
 #include "qdot/render.h"
@@ -58,13 +59,9 @@ static const cli_spec form_spec = {
 
 static int check(cli_run *c) {
     const form_args *a = (form_args *)c;
-    if (a->gram && (a->periods || a->homog))
-        return cli_usage_error("--gram-schmidt is not taken with --periods or --homogeneity");
-    if (a->fourier && (a->gram || a->periods || a->homog || a->change))
-        return cli_usage_error("--fourier is not taken with another question");
-    if (a->change && (a->gram || a->periods || a->homog))
-        return cli_usage_error("--change is not taken with --gram-schmidt, --periods or "
-                               "--homogeneity");
+    if (!!a->gram + !!a->periods + a->homog + a->fourier + !!a->change > 1)
+        return cli_usage_error("--homogeneity, --periods, --gram-schmidt, --fourier and --change "
+                               "are questions of their own: give one");
     if (!a->change != !a->newv)
         return cli_usage_error(a->change ? "--change needs --new \"y1, y2, ...\", the new "
                                            "variables"
@@ -81,14 +78,11 @@ static int gram(qd_ctx *ctx, const form_args *a, const qd_expr *phi, const qd_ex
     qd_qform *f = qd_qform_reduce(ctx, phi, n, x);
     qd_gram *g = f ? qd_gram_schmidt(ctx, n, f->a, s, v) : NULL;
     qd_buf b = QD_BUF_INIT;
-    bool ok = g && qd_render_gram(ctx, g, x, f->a, cli_render_format(a->format), &b) == QD_OK;
+    qd_status st = g ? qd_render_gram(ctx, g, x, f->a, cli_render_format(a->format), &b)
+                     : qd_ctx_status(ctx);
     qd_gram_free(g);
     qd_qform_free(f);
-    if (!ok) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(ctx);
-    }
-    return cli_emit(&b, "orthogonalization");
+    return cli_emit_status(ctx, st, &b, "orthogonalization");
 }
 
 /* --change: f = EXPR in the n old variables x, x = X(y) read from --change
@@ -97,26 +91,19 @@ static int change(qd_ctx *ctx, const form_args *a, const qd_expr *f, const qd_ex
                   size_t n) {
     const qd_expr *y[64], *map[64];
     size_t m = 0;
-    if (qd_qform_vars_read(ctx, a->newv, y, 64, &m) != QD_OK) {
-        cli_diag_show("--new", a->newv, qd_ctx_diag(ctx));
-        return cli_exit(qd_ctx_status(ctx));
-    }
+    if (qd_qform_vars_read(ctx, a->newv, y, 64, &m) != QD_OK)
+        return cli_state_diag(ctx, "--new", a->newv);
     if (m != n)
         return cli_usage_error("--new names %zu variable%s for the %zu of --vars", m,
                                m == 1 ? "" : "s", n);
-    if (qd_change_read(ctx, a->change, n, x, map) != QD_OK) {
-        cli_diag_show("--change", a->change, qd_ctx_diag(ctx));
-        return cli_exit(qd_ctx_status(ctx));
-    }
+    if (qd_change_read(ctx, a->change, n, x, map) != QD_OK)
+        return cli_state_diag(ctx, "--change", a->change);
     qd_change *c = qd_change_vars(ctx, f, n, x, y, map);
     qd_buf b = QD_BUF_INIT;
-    bool ok = c && qd_render_change(ctx, c, cli_render_format(a->format), &b) == QD_OK;
+    qd_status st = c ? qd_render_change(ctx, c, cli_render_format(a->format), &b)
+                     : qd_ctx_status(ctx);
     qd_change_free(c);
-    if (!ok) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(ctx);
-    }
-    return cli_emit(&b, "change of variables");
+    return cli_emit_status(ctx, st, &b, "change of variables");
 }
 
 /* --fourier: EXPR as a sum of harmonics in the variables. */
@@ -124,13 +111,10 @@ static int fourier(qd_ctx *ctx, const form_args *a, const qd_expr *f, const qd_e
                    size_t n) {
     qd_fourier *s = qd_fourier_series(ctx, f, n, x);
     qd_buf b = QD_BUF_INIT;
-    bool ok = s && qd_render_fourier(ctx, s, f, x, cli_render_format(a->format), &b) == QD_OK;
+    qd_status st = s ? qd_render_fourier(ctx, s, f, x, cli_render_format(a->format), &b)
+                     : qd_ctx_status(ctx);
     qd_fourier_free(s);
-    if (!ok) {
-        qd_buf_free(&b);
-        return cli_diag_ctx(ctx);
-    }
-    return cli_emit(&b, "Fourier series");
+    return cli_emit_status(ctx, st, &b, "Fourier series");
 }
 
 /* The reduction, or (--homogeneity) the degree: a "no" exits 3, undecided 1. */
@@ -163,29 +147,23 @@ static int run(cli_run *c) {
     qd_diag err;
     const qd_expr *x[64], **w = NULL;
     size_t n = 0, g = 0;
-    if (a->positive && qd_qform_positive_read(c->ctx, a->positive, x, 64, &n) != QD_OK) {
-        cli_diag_show("--positive", a->positive, qd_ctx_diag(c->ctx));
-        return cli_exit(qd_ctx_status(c->ctx));
-    }
+    if (a->positive && qd_qform_positive_read(c->ctx, a->positive, x, 64, &n) != QD_OK)
+        return cli_state_diag(c->ctx, "--positive", a->positive);
     n = 0;
     const qd_expr *phi = qd_read(c->ctx, a->text, NULL, &err);
     if (!phi) {
         cli_diag_read("<form>", a->text, &err);
         return QD_EXIT_USAGE;
     }
-    if (qd_qform_vars_read(c->ctx, a->vars, x, 64, &n) != QD_OK) {
-        cli_diag_show("--vars", a->vars, qd_ctx_diag(c->ctx));
-        return cli_exit(qd_ctx_status(c->ctx));
-    }
+    if (qd_qform_vars_read(c->ctx, a->vars, x, 64, &n) != QD_OK)
+        return cli_state_diag(c->ctx, "--vars", a->vars);
     if (a->change)
         return change(c->ctx, a, phi, x, n);
     if (a->fourier)
         return fourier(c->ctx, a, phi, x, n);
     const char *vecs = a->gram ? a->gram : a->periods;
-    if (vecs && qd_periods_vectors_read(c->ctx, vecs, n, &g, &w) != QD_OK) {
-        cli_diag_show(a->gram ? "--gram-schmidt" : "--periods", vecs, qd_ctx_diag(c->ctx));
-        return cli_exit(qd_ctx_status(c->ctx));
-    }
+    if (vecs && qd_periods_vectors_read(c->ctx, vecs, n, &g, &w) != QD_OK)
+        return cli_state_diag(c->ctx, a->gram ? "--gram-schmidt" : "--periods", vecs);
     int rc = a->gram ? gram(c->ctx, a, phi, x, n, g, w) : answer(c->ctx, a, phi, x, n, g, w);
     qd_periods_vectors_free(w);
     return rc;

@@ -45,18 +45,11 @@ static const cli_spec spec = {
     opts, NULL, 1, 1, "FILE", false,
 };
 
-/* The tangents e_1..e_n (the unit columns) orthogonalized under g_ij. */
+/* The coordinate tangents orthogonalized under g_ij (qd_metric_gram_schmidt). */
 static qd_status tangents(qd_ctx *ctx, const qd_metric *g, qd_render_format fmt, qd_buf *b) {
-    size_t n = g->n;
-    const qd_expr **I = calloc(n * n + 1, sizeof *I);
-    if (!I)
-        return QD_ERR_NOMEM;
-    for (size_t i = 0; i < n * n; i++)
-        I[i] = qd_int(ctx, i / n == i % n);
-    qd_gram *gs = qd_gram_schmidt(ctx, n, g->g, n, I);
+    qd_gram *gs = qd_metric_gram_schmidt(ctx, g);
     qd_status st = gs ? qd_render_gram(ctx, gs, g->q, g->g, fmt, b) : qd_ctx_status(ctx);
     qd_gram_free(gs);
-    free(I);
     return st;
 }
 

@@ -95,6 +95,13 @@ typedef struct qd_metric {
 QD_API qd_metric *qd_metric_new(qd_ctx *ctx, const qd_model *m);
 QD_API void qd_metric_free(qd_metric *g);
 
+struct qd_gram; /* qdot/form.h */
+/* The coordinate tangents e_1..e_n orthogonalized under g_ij (Desloge
+ * App. 21 Thm 2; `qdot metric --gram-schmidt`): qd_gram_schmidt of the
+ * unit vectors, printed by qd_render_gram over g->q and g->g.  NULL on
+ * failure, reason in ctx.  Free with qd_gram_free. */
+QD_API struct qd_gram *qd_metric_gram_schmidt(qd_ctx *ctx, const qd_metric *g);
+
 /* A force given by its covariant components G (n, the generalized forces
  * G_i = F . dx/dq_i): up[i] = g^ij G_j (raised), phys[i] = G_i / h_i (the
  * orthogonal projection on the q_i direction, ch. 47 eq. 18), ord[i] =

@@ -59,10 +59,7 @@ def _of_model(model):
     if not m:
         raise core.error()
     try:
-        n = m.n
-        eye = ffi.new("const qd_expr *[]", [lib.qd_int(core.ctx, int(i // n == i % n))
-                                            for i in range(n * n)])
-        g = lib.qd_gram_schmidt(core.ctx, n, m.g, n, eye)
+        g = lib.qd_metric_gram_schmidt(core.ctx, m)
         if not g:
             raise core.error()
         try:

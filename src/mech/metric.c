@@ -15,6 +15,7 @@
 
 #include "base/args.h"
 #include "base/mem.h"
+#include "qdot/form.h"
 #include "qdot/metric.h"
 
 static const qd_expr **exprs(qd_ctx *ctx, size_t n) {
@@ -388,4 +389,17 @@ qd_status qd_metric_force(qd_ctx *ctx, const qd_metric *g, const qd_expr *const 
     qd__free(einv);
     qd__free(I);
     return st;
+}
+
+qd_gram *qd_metric_gram_schmidt(qd_ctx *ctx, const qd_metric *g) {
+    QD_ARGS(NULL, ctx && g);
+    size_t n = g->n;
+    const qd_expr **I = qd__calloc(ctx, n * n + 1, sizeof *I);
+    if (!I)
+        return NULL;
+    for (size_t i = 0; i < n * n; i++)
+        I[i] = qd_int(ctx, i / n == i % n);
+    qd_gram *gs = qd_gram_schmidt(ctx, n, g->g, n, I);
+    qd__free(I);
+    return gs;
 }

@@ -3036,6 +3036,13 @@ static void null_metric(void **state)
     /* g NULL */
     qd_metric_free(NULL);
     reset(&F);
+    /* ---- qd_metric_gram_schmidt */
+    /* ctx NULL */
+    assert_null(qd_metric_gram_schmidt(NULL, NULL));
+    reset(&F);
+    /* g NULL */
+    assert_null(qd_metric_gram_schmidt(F.ctx, NULL));
+    reset(&F);
     /* ---- qd_metric_force */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_metric_force(NULL, NULL, (const qd_expr * const *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e, (const qd_expr * *)F.e));
