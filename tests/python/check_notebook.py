@@ -18,7 +18,12 @@ against the physics, computed here:
   - the Kepler orbit (examples/kepler_polar.qd, m = 1.3, k = 4, from r = 1,
     theta' = 1.5): E = m r^2 theta'^2/2 - k/r, a = -k/(2E), e^2 = 1 + 2 E
     L^2/(m k^2), T = 2 pi sqrt(m a^3/k) (Desloge ch. 59), the apsidal angle
-    pi, and the simulated particle back at r = 1 after T, theta = 2 pi.
+    pi, and the simulated particle back at r = 1 after T, theta = 2 pi;
+  - the sleeping top (examples/sleeping_top.qd, A = 1, M g h = 1; Britannica
+    1911, Dynamics, sec. 6): for nu = 3 the tilting frequencies
+    (nu -+ sqrt(nu^2 - 4 A M g h))/(2 A), for nu = 1.5 unstable growing at
+    sqrt(4 A M g h - nu^2)/(2 A); nudged at nu = 3 its tilt stays within twice
+    the nudge, its energy kept.
 
 Skips (77) when nbconvert or the kernel is missing.
 """
@@ -145,6 +150,21 @@ def main():
     assert abs(got(r"after T: r = (\S+)") - r0) < 1e-8, text
     assert abs(got(r" r' = (\S+)")) < 1e-8, text
     assert abs(got(r"theta = (\S+)") - 2 * math.pi) < 1e-8, text
+
+    # the sleeping top, from the model's numbers
+    text = text_of(cells[11])
+    nu, A, Mgh = 3.0, 1.0, 1.0
+    want = sorted((nu + s * math.sqrt(nu**2 - 4 * A * Mgh)) / (2 * A) for s in (-1, 1))
+    freqs = [float(x) for x in re.search(r"frequencies \[([^\]]*)\]", text).group(1).split(",")]
+    assert all(abs(a - b) < 1e-9 for a, b in zip(sorted(freqs), want)), (freqs, want)
+    assert "stable: True" in text.splitlines()[0], text
+    assert "secularly unstable" in text, text  # V upright is a maximum: gyroscopic
+    nu = 1.5
+    assert "nu = 1.5: stable: False" in text, text
+    assert abs(got(r"growth rate: (\S+)") - math.sqrt(4 * A * Mgh - nu**2) / (2 * A)) < 1e-9, text
+    text = text_of(cells[12])
+    assert got(r"largest tilt: (\S+)") < 2 * 0.05, text
+    assert got(r"energy error: (\S+)") < 1e-8, text
     print("ok: omega^2 = %s, lambda = %.3g +- %.2g, energy error %.2g" % (omega2, lam, lam_err,
                                                                          err))
     return 0
