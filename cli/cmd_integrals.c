@@ -12,6 +12,7 @@
 #include "driver.h"
 
 #include <stdio.h>
+#include <string.h>
 #include "qdot/integrals.h"
 
 typedef struct int_args {
@@ -20,8 +21,10 @@ typedef struct int_args {
     cli_list set, symmetry, integral;
 } int_args;
 
+static const char *const formats[] = {"text", "json", "latex", NULL};
 static const cli_opt opts[] = {
-    CLI_OPT_FORMAT(int_args, format),
+    {"--format", NULL, CLI_CHOICE, offsetof(int_args, format), "FORMAT", "output format",
+     formats, NULL},
     {"--symmetry", NULL, CLI_LIST, offsetof(int_args, symmetry), "\"[NAME:] x -> x + eps, ...\"",
      "a symmetry to examine, as the model's `symmetry` statement takes it", NULL, NULL},
     {"--integral", NULL, CLI_LIST, offsetof(int_args, integral), "\"[NAME:] EXPR\"",
@@ -68,9 +71,10 @@ static int parse_given(int_run *r) {
 
 static int emit(int_run *r) {
     qd_buf b = QD_BUF_INIT;
-    qd_status st = cli_json(r->a.format)
-                       ? qd_integrals_json(r->c.ctx, r->I, &r->g, r->c.mf.path, &b)
-                       : qd_integrals_print(r->c.ctx, r->I, &r->g, r->c.mf.path, &b);
+    bool latex = r->a.format && !strcmp(r->a.format, "latex");
+    qd_status st = cli_json(r->a.format) ? qd_integrals_json(r->c.ctx, r->I, &r->g, r->c.mf.path, &b)
+                   : latex ? qd_integrals_latex(r->c.ctx, r->I, &r->g, &b)
+                           : qd_integrals_print(r->c.ctx, r->I, &r->g, r->c.mf.path, &b);
     return cli_emit_status(r->c.ctx, st, &b, "integrals");
 }
 

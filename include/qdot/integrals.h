@@ -214,6 +214,14 @@ QD_API void qd_integrals_given_free(qd_integrals_given *g);
 QD_API qd_status qd_integrals_print(qd_ctx *ctx, const qd_integrals *I,
                                     const qd_integrals_given *g, const char *model_name,
                                     qd_buf *out);
+/* The integrals found, as LaTeX for a paper or a notebook (`qdot integrals
+ * --format latex`, Python's _repr_latex_): one aligned environment, a row
+ * per integral, p_q of each cyclic coordinate, Jacobi's h, the Noether
+ * integrals found and given and the proposed ones, each with its verdict
+ * in words (conserved, not conserved, could not decide; "numerically" when
+ * it rests on random states).  QD_ERR_NOMEM when out could not grow. */
+QD_API qd_status qd_integrals_latex(qd_ctx *ctx, const qd_integrals *I,
+                                    const qd_integrals_given *g, qd_buf *out);
 /* The same as one JSON document and a newline: "model", "coordinates", "L",
  * "cyclic", "jacobi", "energy_balance", "found", "tested", "noether",
  * "proposed" (docs/cli.md shows one). */

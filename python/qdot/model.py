@@ -1097,8 +1097,10 @@ class Model:
         try:
             core.check(lib.qd_integrals_given_derive(core.ctx, I, core.model, g))
             src = _commands.source(core)
+            latex = _commands.rendered(core, lambda buf: lib.qd_integrals_latex(
+                core.ctx, I, g, buf))  # `qdot integrals --format latex`: Jupyter shows it
             return _commands.output(core, "integrals", lambda buf: lib.qd_integrals_json(
-                core.ctx, I, g, src, buf))
+                core.ctx, I, g, src, buf), lambda: latex)
         finally:
             lib.qd_integrals_given_free(g)
             lib.qd_integrals_free(I)

@@ -118,10 +118,24 @@ def test_command_latex_is_the_clis_and_hides_the_table(tmp_path):
     k = qdot.Model.load(kepler)
     for out, args in ((k.routh("theta"), ("routh", kepler, "--ignore", "theta")),
                       (k.hj(), ("hj", kepler)),
-                      (k.bracket("r", "p_r"), ("bracket", kepler, "r", "p_r"))):
+                      (k.bracket("r", "p_r"), ("bracket", kepler, "r", "p_r")),
+                      (k.integrals(), ("integrals", kepler))):
         assert rows(out._repr_latex_()) == rows(cli_text(*args, "--format", "latex")), args
         assert out._repr_html_() is None           # the formulas show, not a table
         parsed(out.html())                         # the table is still there to ask for
+
+
+def test_integrals_latex_has_each_integral_and_its_verdict():
+    # Kepler's polar model: theta is cyclic, p_theta = m r^2 theta' (the areal
+    # law) is conserved, and so is h = T + V (Goldstein ch. 1, Desloge ch. 59)
+    k = qdot.Model.load(os.path.join(EXAMPLES, "kepler_polar.qd"))
+    r = [x for x in rows(k.integrals()._repr_latex_()) if "gathered" not in x]
+    assert r[0] == "p_{\\theta} &= m r^{2} \\dot{\\theta} && \\text{conserved}", r
+    assert r[1].startswith("h &= ") and r[1].endswith("\\text{conserved}") and len(r) == 2, r
+    # an integral proposed that is not one is said to be not conserved
+    r = rows(qdot.Model(open(os.path.join(EXAMPLES, "kepler_polar.qd")).read() +
+                        "\nintegral radial: m*r'\n").integrals()._repr_latex_())
+    assert "\\text{radial} &= m \\dot{r} && \\text{not conserved}" in r, r
 
 
 def test_statespace_latex_entries_are_the_librarys():

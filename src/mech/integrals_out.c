@@ -393,11 +393,83 @@ static void write_json(const it_out *r, qd_buf *b) {
     b->failed = b->failed || !qd_json_ok(&j);
 }
 
+/* ---- LaTeX ------------------------------------------------------------------- */
+
+static void lx(const it_out *r, qd_buf *b, const qd_expr *x) {
+    qd_print(r->ctx, x, QD_FMT_LATEX, b);
+}
+
+/* A name given by the model (a symmetry's, an integral's) inside \text{}. */
+static void ltext(qd_buf *b, const char *s) {
+    qd_buf_puts(b, "\\text{");
+    for (; *s; s++)
+        if (strchr("_&%$#{}", *s))
+            qd_buf_printf(b, "\\%c", *s);
+        else if (*s == '\\' || *s == '^' || *s == '~')
+            qd_buf_puts(b, " ");
+        else
+            qd_buf_printf(b, "%c", *s);
+    qd_buf_puts(b, "}");
+}
+
+/* The verdict column of a row. */
+static void lverdict(qd_buf *b, bool conserved, bool numeric, const qd_zero_result *z) {
+    qd_buf_puts(b, " && \\text{");
+    qd_buf_puts(b, conserved ? (numeric ? "conserved (numerically)" : "conserved")
+                   : !z || z->kind == QD_ZERO_NONZERO ? "not conserved"
+                                                      : "could not decide");
+    qd_buf_puts(b, "} \\\\\n");
+}
+
+static void lnoether(const it_out *r, qd_buf *b, const qd_noether *nt) {
+    ltext(b, nt->name);
+    qd_buf_puts(b, " &= ");
+    lx(r, b, nt->integral);
+    lverdict(b, nt->conserved, nt->numeric, &nt->cert);
+}
+
+static void write_latex(const it_out *r, qd_buf *b) {
+    const qd_integrals *I = r->I;
+    qd_buf_puts(b, "\\begin{aligned}\n");
+    for (size_t i = 0; i < I->ncyclic; i++) {
+        const qd_int_cyclic *c = &I->cyclic[i];
+        qd_buf_puts(b, "p_{");
+        lx(r, b, I->q[c->coord]);
+        qd_buf_puts(b, "} &= ");
+        lx(r, b, c->momentum);
+        lverdict(b, c->conserved, false, NULL);
+    }
+    qd_buf_puts(b, "h &= ");
+    lx(r, b, I->jacobi.h);
+    lverdict(b, I->jacobi.conserved, I->jacobi.numeric, &I->jacobi.cert);
+    for (size_t i = 0; i < I->nfound; i++)
+        lnoether(r, b, &I->found[i]);
+    for (size_t i = 0; i < r->g->nnoether; i++)
+        lnoether(r, b, &r->g->noether[i]);
+    for (size_t i = 0; i < r->g->nproposed; i++) {
+        const qd_int_proposed *p = &r->g->proposed[i];
+        ltext(b, p->name);
+        qd_buf_puts(b, " &= ");
+        lx(r, b, p->expr);
+        lverdict(b, p->conserved, p->numeric, &p->cert);
+    }
+    qd_buf_puts(b, "\\end{aligned}\n");
+}
+
 static qd_status it_done(qd_ctx *ctx, const qd_buf *b) {
     if (!b->failed)
         return QD_OK;
     qd_ctx_error(ctx, QD_ERR_NOMEM, "out of memory writing the integrals");
     return QD_ERR_NOMEM;
+}
+
+qd_status qd_integrals_latex(qd_ctx *ctx, const qd_integrals *I, const qd_integrals_given *g,
+                             qd_buf *out) {
+    QD_ARGS_CTX(ctx, ctx && I && out);
+    const qd_integrals_given none = {0};
+    it_out o = {ctx, I, g ? g : &none, NULL};
+    write_latex(&o, out);
+    return it_done(ctx, out);
 }
 
 qd_status qd_integrals_print(qd_ctx *ctx, const qd_integrals *I, const qd_integrals_given *g,

@@ -2437,6 +2437,16 @@ static void null_integrals(void **state)
     /* out NULL */
     assert_int_equal(QD_ERR_ARG, qd_integrals_print(F.ctx, NULL, NULL, "q", NULL));
     reset(&F);
+    /* ---- qd_integrals_latex */
+    /* ctx NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_latex(NULL, NULL, NULL, &F.buf));
+    reset(&F);
+    /* I NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_latex(F.ctx, NULL, NULL, &F.buf));
+    reset(&F);
+    /* out NULL */
+    assert_int_equal(QD_ERR_ARG, qd_integrals_latex(F.ctx, NULL, NULL, NULL));
+    reset(&F);
     /* ---- qd_integrals_json */
     /* ctx NULL */
     assert_int_equal(QD_ERR_ARG, qd_integrals_json(NULL, NULL, NULL, "q", &F.buf));
