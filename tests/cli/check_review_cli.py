@@ -59,7 +59,7 @@ CASES = [
      "unknown value 'c' (one of text, json, latex, sympy)"),
     (['routh', KEPLER], USAGE, 'routh needs --ignore'),
     (['integrals', KCART, '--format'], USAGE, "--format needs a value"),
-    (['integrals', KCART, '--format', 'latex'], USAGE, "unknown value 'latex' (one of text, json)"),
+    (['integrals', KCART, '--format', 'sympy'], USAGE, "unknown value 'sympy' (one of text, json, latex)"),
     (['integrals', KCART, '--no-search=1'], USAGE, '--no-search takes no value'),
     (['equilibria', 'one.qd', '--guess', 'x=1', '--guess', 'x=2'], USAGE, '--guess is given twice'),
     (['equilibria', 'one.qd', '--format', 'yaml'], USAGE, "unknown value 'yaml' (one of text, json)"),
