@@ -54,8 +54,10 @@ static const struct {
     {"--near", "--guess", "the starting point of a search, as in stability and path"},
 };
 
-static const cli_opt *lookup_or_out(const cli_spec *spec, const char *arg, size_t len,
-                                    size_t *base) {
+/* The option arg[0..len) names: the table's, else the new spelling of a
+ * renamed one (said on stderr), else the generic -o/--out. */
+static const cli_opt *find_option(const cli_spec *spec, const char *arg, size_t len,
+                                  size_t *base) {
     const cli_opt *o = lookup(spec, arg, len, base);
     for (size_t k = 0; !o && k < sizeof renamed / sizeof renamed[0]; k++)
         if (same(renamed[k].old, arg, len) &&
@@ -182,7 +184,7 @@ static bool looks_like_option(const cli_spec *spec, const char *arg) {
     if (!spec->expressions)
         return true;
     size_t base;
-    return cli_is_option(arg) || lookup_or_out(spec, arg, option_name_len(arg), &base);
+    return cli_is_option(arg) || find_option(spec, arg, option_name_len(arg), &base);
 }
 
 /* One positional more than the command takes. */
@@ -222,7 +224,7 @@ int cli_parse(const cli_spec *spec, int argc, char **argv, void *args, const cha
             continue;
         }
         size_t len = option_name_len(arg), base = 0;
-        const cli_opt *o = lookup_or_out(spec, arg, len, &base);
+        const cli_opt *o = find_option(spec, arg, len, &base);
         if (!o)
             return unknown_option(spec, arg, len);
         if (o->kind != CLI_LIST) {
