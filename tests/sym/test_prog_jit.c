@@ -209,7 +209,7 @@ static void test_spd_solve(void **state) {
         size_t nin = n * n + n;
         const qd_expr *in[56], *out[57];
         for (size_t k = 0; k < nin; k++) {
-            char name[16];
+            char name[24]; /* "v" and any size_t */
             snprintf(name, sizeof name, "v%zu", k);
             out[k] = in[k] = qd_symbol(ctx, name);
         }
