@@ -141,11 +141,9 @@ static void change_json(qd_ctx *ctx, qd_json *j, const qd_change *c) {
 
 qd_status qd_render_change(qd_ctx *ctx, const qd_change *c, qd_render_format fmt, qd_buf *out) {
     QD_ARGS_CTX(ctx, ctx && c && out);
-    if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "a change of variables prints as text or json");
-        return QD_ERR_ARG;
-    }
-    qd_status st = QD_OK;
+    qd_status st = qd__render_text_or_json(ctx, fmt, "a change of variables");
+    if (st != QD_OK)
+        return st;
     if (fmt == QD_RENDER_JSON) {
         qd_json j;
         qd_json_init(&j, out);
@@ -155,9 +153,5 @@ qd_status qd_render_change(qd_ctx *ctx, const qd_change *c, qd_render_format fmt
     } else {
         change_text(ctx, out, c);
     }
-    if (st == QD_OK && out->failed)
-        st = QD_ERR_NOMEM;
-    if (st != QD_OK)
-        qd_ctx_error(ctx, st, "cannot print the change of variables: %s", qd_status_str(st));
-    return st;
+    return qd__render_finish(ctx, out, st, "the change of variables");
 }

@@ -83,11 +83,9 @@ static void fourier_json(qd_ctx *ctx, qd_json *j, const qd_fourier *f, const qd_
 qd_status qd_render_fourier(qd_ctx *ctx, const qd_fourier *f, const qd_expr *fx,
                             const qd_expr *const *x, qd_render_format fmt, qd_buf *out) {
     QD_ARGS_CTX(ctx, ctx && f && fx && x && out);
-    if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "a Fourier series prints as text or json");
-        return QD_ERR_ARG;
-    }
-    qd_status st = QD_OK;
+    qd_status st = qd__render_text_or_json(ctx, fmt, "a Fourier series");
+    if (st != QD_OK)
+        return st;
     if (fmt == QD_RENDER_JSON) {
         qd_json j;
         qd_json_init(&j, out);
@@ -97,9 +95,5 @@ qd_status qd_render_fourier(qd_ctx *ctx, const qd_fourier *f, const qd_expr *fx,
     } else {
         fourier_text(ctx, out, f, fx, x);
     }
-    if (st == QD_OK && out->failed)
-        st = QD_ERR_NOMEM;
-    if (st != QD_OK)
-        qd_ctx_error(ctx, st, "cannot print the Fourier series: %s", qd_status_str(st));
-    return st;
+    return qd__render_finish(ctx, out, st, "the Fourier series");
 }

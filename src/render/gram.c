@@ -122,11 +122,9 @@ static void gram_json(qd_ctx *ctx, qd_json *j, const qd_gram *g, const qd_expr *
 qd_status qd_render_gram(qd_ctx *ctx, const qd_gram *g, const qd_expr *const *x,
                          const qd_expr *const *T, qd_render_format fmt, qd_buf *out) {
     QD_ARGS_CTX(ctx, ctx && g && out);
-    if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "an orthogonalization prints as text or json");
-        return QD_ERR_ARG;
-    }
-    qd_status st = QD_OK;
+    qd_status st = qd__render_text_or_json(ctx, fmt, "an orthogonalization");
+    if (st != QD_OK)
+        return st;
     if (fmt == QD_RENDER_JSON) {
         qd_json j;
         qd_json_init(&j, out);
@@ -136,9 +134,5 @@ qd_status qd_render_gram(qd_ctx *ctx, const qd_gram *g, const qd_expr *const *x,
     } else {
         gram_text(ctx, out, g, x, T);
     }
-    if (st == QD_OK && out->failed)
-        st = QD_ERR_NOMEM;
-    if (st != QD_OK)
-        qd_ctx_error(ctx, st, "cannot print the orthogonalization: %s", qd_status_str(st));
-    return st;
+    return qd__render_finish(ctx, out, st, "the orthogonalization");
 }

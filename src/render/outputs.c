@@ -96,6 +96,21 @@ qd_status qd__render_done(qd_ctx *ctx, const qd_buf *out, qd_status st) {
     return st;
 }
 
+qd_status qd__render_text_or_json(qd_ctx *ctx, qd_render_format fmt, const char *what) {
+    if (fmt == QD_RENDER_TEXT || fmt == QD_RENDER_JSON)
+        return QD_OK;
+    qd_ctx_error(ctx, QD_ERR_ARG, "%s prints as text or json", what);
+    return QD_ERR_ARG;
+}
+
+qd_status qd__render_finish(qd_ctx *ctx, const qd_buf *out, qd_status st, const char *name) {
+    if (st == QD_OK && out->failed)
+        st = QD_ERR_NOMEM;
+    if (st != QD_OK)
+        qd_ctx_error(ctx, st, "cannot print %s: %s", name, qd_status_str(st));
+    return st;
+}
+
 qd_status qd__render_json_expr(qd_ctx *ctx, qd_json *j, const qd_expr *x, qd_buf *tmp) {
     qd_buf_clear(tmp);
     qd_status st = qd_print(ctx, x, QD_FMT_TEXT, tmp);

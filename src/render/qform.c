@@ -116,11 +116,9 @@ static void write_json(qd_ctx *ctx, qd_json *j, const qd_expr *phi, const qd_qfo
 qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
                           qd_render_format fmt, qd_buf *out) {
     QD_ARGS_CTX(ctx, ctx && phi && f && out);
-    if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "a quadratic form prints as text or json");
-        return QD_ERR_ARG;
-    }
-    qd_status st = QD_OK;
+    qd_status st = qd__render_text_or_json(ctx, fmt, "a quadratic form");
+    if (st != QD_OK)
+        return st;
     if (fmt == QD_RENDER_JSON) {
         qd_json j;
         qd_json_init(&j, out);
@@ -130,11 +128,7 @@ qd_status qd_render_qform(qd_ctx *ctx, const qd_expr *phi, const qd_qform *f,
     } else {
         write_text(ctx, out, phi, f);
     }
-    if (st == QD_OK && out->failed)
-        st = QD_ERR_NOMEM;
-    if (st != QD_OK)
-        qd_ctx_error(ctx, st, "cannot print the quadratic form: %s", qd_status_str(st));
-    return st;
+    return qd__render_finish(ctx, out, st, "the quadratic form");
 }
 
 /* ---- homogeneity (qd_homogeneity, Desloge App. 20) ------------------------ */
@@ -202,11 +196,9 @@ static void homog_json(qd_ctx *ctx, qd_json *j, const qd_homog *h, size_t n,
 qd_status qd_render_homog(qd_ctx *ctx, const qd_homog *h, size_t n, const qd_expr *const *x,
                           qd_render_format fmt, qd_buf *out) {
     QD_ARGS_CTX(ctx, ctx && h && h->f && h->euler && (x || !n) && out);
-    if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "a homogeneity prints as text or json");
-        return QD_ERR_ARG;
-    }
-    qd_status st = QD_OK;
+    qd_status st = qd__render_text_or_json(ctx, fmt, "a homogeneity");
+    if (st != QD_OK)
+        return st;
     if (fmt == QD_RENDER_JSON) {
         qd_json j;
         qd_json_init(&j, out);
@@ -216,11 +208,7 @@ qd_status qd_render_homog(qd_ctx *ctx, const qd_homog *h, size_t n, const qd_exp
     } else {
         homog_text(ctx, out, h, n, x);
     }
-    if (st == QD_OK && out->failed)
-        st = QD_ERR_NOMEM;
-    if (st != QD_OK)
-        qd_ctx_error(ctx, st, "cannot print the homogeneity: %s", qd_status_str(st));
-    return st;
+    return qd__render_finish(ctx, out, st, "the homogeneity");
 }
 
 /* ---- a fundamental period system (qd_periods_reduce, Desloge App. 31) ----- */
@@ -350,11 +338,9 @@ qd_status qd_render_periods(qd_ctx *ctx, const qd_expr *f, const qd_periods *p,
                             const qd_expr *const *x, const qd_expr *const *w,
                             qd_render_format fmt, qd_buf *out) {
     QD_ARGS_CTX(ctx, ctx && p && x && w && out);
-    if (fmt != QD_RENDER_TEXT && fmt != QD_RENDER_JSON) {
-        qd_ctx_error(ctx, QD_ERR_ARG, "periods print as text or json");
-        return QD_ERR_ARG;
-    }
-    qd_status st = QD_OK;
+    qd_status st = qd__render_text_or_json(ctx, fmt, "a set of periods");
+    if (st != QD_OK)
+        return st;
     if (fmt == QD_RENDER_JSON) {
         qd_json j;
         qd_json_init(&j, out);
@@ -364,9 +350,5 @@ qd_status qd_render_periods(qd_ctx *ctx, const qd_expr *f, const qd_periods *p,
     } else {
         periods_text(ctx, out, f, p, x, w);
     }
-    if (st == QD_OK && out->failed)
-        st = QD_ERR_NOMEM;
-    if (st != QD_OK)
-        qd_ctx_error(ctx, st, "cannot print the periods: %s", qd_status_str(st));
-    return st;
+    return qd__render_finish(ctx, out, st, "the periods");
 }

@@ -72,6 +72,14 @@ void qd__render_json_names(struct qd_json *j, const char *key, const qd_expr *co
  * equations. */
 qd_status qd__render_done(qd_ctx *ctx, const qd_buf *out, qd_status st);
 
+/* One result that prints as text or JSON (a quadratic form, periods, a
+ * Fourier series, ...): QD_OK for those formats, else QD_ERR_ARG recorded
+ * as "WHAT prints as text or json". */
+qd_status qd__render_text_or_json(qd_ctx *ctx, qd_render_format fmt, const char *what);
+/* After such a rendering: st, QD_ERR_NOMEM when out ran out, and a failure
+ * recorded as "cannot print NAME: reason". */
+qd_status qd__render_finish(qd_ctx *ctx, const qd_buf *out, qd_status st, const char *name);
+
 /* The status after a JSON rendering into b: QD_ERR_NOMEM when b ran out,
  * QD_ERR_NUMERIC for a number JSON cannot hold. */
 qd_status qd__render_json_status(const struct qd_json *j, const qd_buf *b, qd_status st);
